@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs the Debian packages candela builds with (none are vendored or downloaded). Idempotent: installs only what is missing,
+# runs `apt-get update` only then, and is quiet when everything is already present.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config ccache
+  libembree-dev libtbb-dev libopenexr-dev libstb-dev libtinyobjloader-dev
+  nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+sudo=""
+[ "$(id -u)" -ne 0 ] && sudo="sudo"
+echo "setup: installing ${missing[*]}" >&2
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,246 @@
+#include "candela/geometry/accelerator.h"
+
+#include <embree3/rtcore.h>
+#include <pmmintrin.h>
+#include <xmmintrin.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "candela/core/error.h"
+#include "candela/geometry/sphere_intersection.h"
+#include "candela/math/constants.h"
+
+namespace candela {
+
+namespace {
+
+// Embree reports failures through a per-device error code; the ones it can raise here (out of
+// memory, invalid arguments) are internal failures, not bad input. (Throwing from its error
+// callback would unwind through C code, so the code is polled after each build step instead.)
+void check_embree(RTCDevice device, const char* step) {
+    RTCError code = rtcGetDeviceError(device);
+    if (code != RTC_ERROR_NONE)
+        throw RenderError(std::string("Embree failed to ") + step + " (error code " + std::to_string(int(code)) + ")");
+}
+
+// Embree's user geometry calls these for the spheres; the user pointer is the Sphere.
+void sphere_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto& s = *static_cast<const Sphere*>(args->geometryUserPtr);
+    // Round outwards so float bounds contain the double sphere.
+    auto lo = [](double v) { return std::nextafter(float(v), -kInfinity); };
+    auto hi = [](double v) { return std::nextafter(float(v), kInfinity); };
+    RTCBounds* b = args->bounds_o;
+    b->lower_x = lo(s.center.x - s.radius);
+    b->lower_y = lo(s.center.y - s.radius);
+    b->lower_z = lo(s.center.z - s.radius);
+    b->upper_x = hi(s.center.x + s.radius);
+    b->upper_y = hi(s.center.y + s.radius);
+    b->upper_z = hi(s.center.z + s.radius);
+}
+
+std::optional<double> intersect_embree_ray(const Sphere& s, const RTCRay& r) {
+    return intersect_sphere(s, Vec3d(r.org_x, r.org_y, r.org_z), Vec3d(r.dir_x, r.dir_y, r.dir_z),
+                            double(r.tnear), double(r.tfar));
+}
+
+void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
+    // candela only traces single rays (rtcIntersect1), so N is 1.
+    if (!args->valid[0]) return;
+    auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
+    const auto& s = *static_cast<const Sphere*>(args->geometryUserPtr);
+    std::optional<double> t = intersect_embree_ray(s, rh->ray);
+    if (!t) return;
+    // The stored t may round up past tfar; hits must never move tfar outwards.
+    float tf = std::min(float(*t), rh->ray.tfar);
+    rh->ray.tfar = tf;
+    rh->hit.geomID = args->geomID;
+    rh->hit.primID = args->primID;
+    rh->hit.instID[0] = args->context->instID[0];
+    rh->hit.u = 0.0f;  // the hit record is rebuilt from the ray in make_sphere_hit
+    rh->hit.v = 0.0f;
+    rh->hit.Ng_x = rh->hit.Ng_y = rh->hit.Ng_z = 0.0f;
+}
+
+void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* r = reinterpret_cast<RTCRay*>(args->ray);
+    const auto& s = *static_cast<const Sphere*>(args->geometryUserPtr);
+    if (intersect_embree_ray(s, *r)) r->tfar = -kInfinity;  // Embree's mark for "occluded"
+}
+
+RTCRay to_embree(const Ray& ray) {
+    RTCRay r;
+    r.org_x = ray.o.x;
+    r.org_y = ray.o.y;
+    r.org_z = ray.o.z;
+    r.dir_x = ray.d.x;
+    r.dir_y = ray.d.y;
+    r.dir_z = ray.d.z;
+    r.tnear = ray.tmin;
+    r.tfar = ray.tmax;
+    r.time = 0.0f;
+    r.mask = 0xFFFFFFFFu;
+    r.id = 0;
+    r.flags = 0;
+    return r;
+}
+
+}  // namespace
+
+struct Accelerator::Impl {
+    std::span<const TriangleMesh> meshes;
+    std::span<const Sphere> spheres;
+    std::span<const Shape> shapes;
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+
+    ~Impl() {
+        if (scene) rtcReleaseScene(scene);
+        if (device) rtcReleaseDevice(device);
+    }
+
+    void attach_mesh(const TriangleMesh& mesh, unsigned id) {
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        // Embree copies into its own buffers, which it pads for its SIMD loads.
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                              3 * sizeof(float), mesh.positions.size()));
+        for (size_t i = 0; i < mesh.positions.size(); ++i) {
+            v[3 * i + 0] = mesh.positions[i].x;
+            v[3 * i + 1] = mesh.positions[i].y;
+            v[3 * i + 2] = mesh.positions[i].z;
+        }
+        auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangle_count()));
+        std::copy(mesh.indices.begin(), mesh.indices.end(), idx);
+        commit_and_attach(g, id);
+    }
+
+    void attach_sphere(const Sphere& sphere, unsigned id) {
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(g, 1);
+        rtcSetGeometryUserData(g, const_cast<Sphere*>(&sphere));
+        rtcSetGeometryBoundsFunction(g, sphere_bounds, nullptr);
+        rtcSetGeometryIntersectFunction(g, sphere_intersect);
+        rtcSetGeometryOccludedFunction(g, sphere_occluded);
+        commit_and_attach(g, id);
+    }
+
+    void commit_and_attach(RTCGeometry g, unsigned id) {
+        rtcCommitGeometry(g);
+        rtcAttachGeometryByID(scene, g, id);
+        rtcReleaseGeometry(g);
+        check_embree(device, "build a shape");
+    }
+
+    SurfaceHit make_triangle_hit(const RTCRayHit& rh) const {
+        const TriangleMesh& mesh = meshes[shapes[rh.hit.geomID].index];
+        uint32_t tri = rh.hit.primID;
+        uint32_t i0 = mesh.indices[3 * tri], i1 = mesh.indices[3 * tri + 1], i2 = mesh.indices[3 * tri + 2];
+        float b1 = rh.hit.u, b2 = rh.hit.v, b0 = 1.0f - b1 - b2;
+        const Vec3f &p0 = mesh.positions[i0], &p1 = mesh.positions[i1], &p2 = mesh.positions[i2];
+
+        SurfaceHit h;
+        h.t = rh.ray.tfar;
+        h.shape_id = rh.hit.geomID;
+        h.prim_id = tri;
+        // From the barycentrics rather than o + t d: the error is then relative to the vertex
+        // coordinates, which ray_offset.h's bound covers, not to the ray length.
+        h.p = p0 * b0 + p1 * b1 + p2 * b2;
+        h.ng = normalize(cross(p1 - p0, p2 - p0));
+        h.ns = h.ng;
+        if (!mesh.normals.empty()) {
+            Vec3f n = mesh.normals[i0] * b0 + mesh.normals[i1] * b1 + mesh.normals[i2] * b2;
+            float len = length(n);
+            if (len > 0.0f) {
+                h.ns = n / len;
+                h.ng = face_forward(h.ng, h.ns);  // pbrt's rule: the normals agree on the front
+            }
+        }
+        h.uv = mesh.uvs.empty() ? Vec2f(b1, b2) : mesh.uvs[i0] * b0 + mesh.uvs[i1] * b1 + mesh.uvs[i2] * b2;
+        return h;
+    }
+
+    SurfaceHit make_sphere_hit(const RTCRayHit& rh, const Ray& ray) const {
+        const Sphere& s = spheres[shapes[rh.hit.geomID].index];
+        SurfaceHit h;
+        h.t = rh.ray.tfar;
+        h.shape_id = rh.hit.geomID;
+        h.prim_id = 0;
+        Vec3d p = project_to_sphere(s, Vec3d(ray.o) + Vec3d(ray.d) * double(h.t));
+        Vec3d n = (p - s.center) / s.radius;
+        h.p = Vec3f(p);
+        h.ng = normalize(Vec3f(s.reverse_orientation ? -n : n));
+        h.ns = h.ng;
+        // The environment's convention: +Y up, u = atan2(x, -z) / 2pi, v = acos(y) / pi.
+        double u = std::atan2(n.x, -n.z) / (2.0 * kPiD);
+        h.uv = Vec2f(float(u < 0.0 ? u + 1.0 : u), float(std::acos(std::clamp(n.y, -1.0, 1.0)) / kPiD));
+        return h;
+    }
+};
+
+Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
+                         std::span<const Shape> shapes)
+    : impl_(std::make_unique<Impl>()) {
+    Impl& m = *impl_;
+    m.meshes = meshes;
+    m.spheres = spheres;
+    m.shapes = shapes;
+    m.device = rtcNewDevice(nullptr);
+    if (!m.device) throw RenderError("cannot create the Embree device");
+    m.scene = rtcNewScene(m.device);
+    // ROBUST: no traversal shortcuts that can miss hits at shared edges.
+    rtcSetSceneFlags(m.scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(m.scene, RTC_BUILD_QUALITY_HIGH);
+    for (unsigned id = 0; id < shapes.size(); ++id) {
+        const Shape& shape = shapes[id];
+        if (shape.kind == ShapeKind::kMesh)
+            m.attach_mesh(meshes[shape.index], id);
+        else
+            m.attach_sphere(spheres[shape.index], id);
+    }
+    rtcCommitScene(m.scene);
+    check_embree(m.device, "build the scene");
+}
+
+Accelerator::~Accelerator() = default;
+
+std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    rh.ray = to_embree(ray);
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl_->scene, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    if (impl_->shapes[rh.hit.geomID].kind == ShapeKind::kSphere) return impl_->make_sphere_hit(rh, ray);
+    return impl_->make_triangle_hit(rh);
+}
+
+bool Accelerator::occluded(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r = to_embree(ray);
+    rtcOccluded1(impl_->scene, &context, &r);
+    return r.tfar == -kInfinity;
+}
+
+Bounds3f Accelerator::bounds() const {
+    RTCBounds b;
+    rtcGetSceneBounds(impl_->scene, &b);
+    Bounds3f out;
+    if (b.lower_x <= b.upper_x) {
+        out.lo = {b.lower_x, b.lower_y, b.lower_z};
+        out.hi = {b.upper_x, b.upper_y, b.upper_z};
+    }
+    return out;
+}
+
+void enable_flush_denormals() {
+    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+}
+
+}  // namespace candela

@@ -1,0 +1,44 @@
+#pragma once
+// Ray traversal: one Embree 3 scene over all shapes. Triangle meshes are native Embree triangles;
+// spheres are user geometry with candela's precise intersection (sphere_intersection.h). Shape i
+// of the scene is Embree geometry i, so hits name the shape directly. Embree stays out of this
+// header so that only accelerator.cpp compiles against it.
+#include <memory>
+#include <optional>
+#include <span>
+
+#include "candela/geometry/shape.h"
+#include "candela/geometry/sphere.h"
+#include "candela/geometry/surface_hit.h"
+#include "candela/geometry/triangle_mesh.h"
+#include "candela/math/bounds.h"
+#include "candela/math/ray.h"
+
+namespace candela {
+
+class Accelerator {
+  public:
+    // The spans must outlive the accelerator: hits read vertex data from them.
+    Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
+                std::span<const Shape> shapes);
+    ~Accelerator();
+    Accelerator(const Accelerator&) = delete;
+    Accelerator& operator=(const Accelerator&) = delete;
+
+    // The closest hit with ray.tmin <= t <= ray.tmax. Thread-safe.
+    std::optional<SurfaceHit> intersect(const Ray& ray) const;
+    // Whether anything lies on the ray within [tmin, tmax] (shadow rays). Thread-safe.
+    bool occluded(const Ray& ray) const;
+    // World bounds of all shapes.
+    Bounds3f bounds() const;
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Call once in every thread that traces rays: Embree is faster, and its results are the same,
+// with denormals flushed to zero (Embree's documentation asks for FTZ and DAZ).
+void enable_flush_denormals();
+
+}  // namespace candela

@@ -1,0 +1,20 @@
+#pragma once
+// One entry of the scene file's `shapes`: which geometry, which material, and its emission. Its
+// index in the scene's shape array is the shape id of hits and the Embree geometry id.
+#include <cstdint>
+
+#include "candela/math/rgb.h"
+
+namespace candela {
+
+enum class ShapeKind { kMesh, kSphere };  // a quad is a mesh
+
+struct Shape {
+    ShapeKind kind = ShapeKind::kMesh;
+    uint32_t index = 0;     // into the scene's meshes or spheres
+    uint32_t material = 0;  // into the scene's materials
+    Rgb emission;           // black: not a light
+    bool two_sided = false; // emission leaves both sides
+};
+
+}  // namespace candela

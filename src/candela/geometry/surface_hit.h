@@ -1,0 +1,23 @@
+#pragma once
+// What a ray hit, in world space.
+#include <cstdint>
+
+#include "candela/math/ray.h"
+#include "candela/math/vec.h"
+
+namespace candela {
+
+struct SurfaceHit {
+    float t = 0;       // ray parameter of the hit
+    Vec3f p;           // the point, computed on the surface (not o + t d) so it is accurate
+    Vec3f ng;          // unit geometric normal on the shape's front side
+    Vec3f ns;          // unit shading normal (interpolated vertex normal, or ng), same side as ng
+    Vec2f uv;          // surface parameterisation
+    uint32_t shape_id = 0;
+    uint32_t prim_id = 0;  // triangle index within the mesh; 0 for spheres
+
+    // True when the ray came from the front side.
+    bool front_face(const Vec3f& ray_dir) const { return dot(ray_dir, ng) < 0.0f; }
+};
+
+}  // namespace candela

@@ -1,0 +1,17 @@
+#pragma once
+// A ray o + t d for t in [tmin, tmax]. d need not be unit length, but rays from the camera and
+// from BSDF sampling are.
+#include "candela/math/constants.h"
+#include "candela/math/vec.h"
+
+namespace candela {
+
+struct Ray {
+    Vec3f o;
+    Vec3f d;
+    float tmin = 0.0f;
+    float tmax = kInfinity;
+    CANDELA_HD Vec3f at(float t) const { return o + d * t; }
+};
+
+}  // namespace candela

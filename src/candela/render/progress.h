@@ -1,0 +1,44 @@
+#pragma once
+// Progress reporting on stderr. On a terminal, a bar redrawn a few times a second (percent,
+// elapsed, ETA, rays/s); otherwise nothing until the one summary line at the end.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace candela {
+
+class ProgressBar {
+  public:
+    // total: units of work (camera samples); enabled: draw the bar (a terminal is attached).
+    ProgressBar(uint64_t total, bool enabled);
+    ~ProgressBar();  // stops the drawing thread, leaving the line finished
+
+    // Called by render threads; lock-free.
+    void advance(uint64_t units, uint64_t rays) {
+        done_.fetch_add(units, std::memory_order_relaxed);
+        rays_.fetch_add(rays, std::memory_order_relaxed);
+    }
+
+  private:
+    void draw(bool final_line) const;
+
+    uint64_t total_;
+    bool enabled_;
+    std::atomic<uint64_t> done_{0};
+    std::atomic<uint64_t> rays_{0};
+    std::chrono::steady_clock::time_point start_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    bool stop_ = false;
+    std::thread drawer_;
+};
+
+// Human-readable durations and rates for progress and summary lines: "1m05s", "12.3M".
+std::string format_duration(double seconds);
+std::string format_count(double value);
+
+}  // namespace candela

@@ -1,0 +1,117 @@
+#pragma once
+// Warps: maps from uniform samples u in [0, 1)^2 (or [0, 1)) to other domains, each next to its
+// density (Nori's warp.h layout, yocto's sample_X / X_pdf pairs). The comment on each pdf names
+// its measure. A pdf takes the warped value and returns 0 outside the warp's support, so it can
+// be checked against the samples (tests/sampling/warps_stat_test.cpp).
+#include <cmath>
+
+#include "candela/core/platform.h"
+#include "candela/math/constants.h"
+#include "candela/math/vec.h"
+
+namespace candela {
+
+// ---- unit disk -------------------------------------------------------------------------------
+
+// Uniform point on the unit disk by Shirley and Chiu's concentric map (1997, "A Low Distortion
+// Map Between Disk and Square"): it keeps strata compact, unlike the polar r = sqrt(u) map.
+CANDELA_HD inline Vec2f sample_concentric_disk(Vec2f u) {
+    float a = 2.0f * u.x - 1.0f;
+    float b = 2.0f * u.y - 1.0f;
+    if (a == 0.0f && b == 0.0f) return {0.0f, 0.0f};
+    // Concentric squares map to concentric circles; the larger coordinate picks the wedge.
+    float r, phi;
+    if (std::abs(a) > std::abs(b)) {
+        r = a;
+        phi = kPiOver4 * (b / a);
+    } else {
+        r = b;
+        phi = kPiOver2 - kPiOver4 * (a / b);
+    }
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+// Per unit area of the plane: 1/pi inside the unit disk.
+CANDELA_HD inline float concentric_disk_pdf(Vec2f p) {
+    return p.x * p.x + p.y * p.y <= 1.0f ? kInvPi : 0.0f;
+}
+
+// ---- sphere and hemispheres ------------------------------------------------------------------
+
+// Uniform direction on the unit sphere: z = cos(theta) is uniform on [-1, 1] (Archimedes).
+CANDELA_HD inline Vec3f sample_uniform_sphere(Vec2f u) {
+    float z = 1.0f - 2.0f * u.x;
+    float r = safe_sqrt(1.0f - z * z);
+    float phi = 2.0f * kPi * u.y;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+// Per unit solid angle: 1/(4 pi) everywhere.
+CANDELA_HD inline float uniform_sphere_pdf([[maybe_unused]] Vec3f w) { return kInv4Pi; }
+
+// Uniform direction on the hemisphere z >= 0: z uniform on [0, 1].
+CANDELA_HD inline Vec3f sample_uniform_hemisphere(Vec2f u) {
+    float z = u.x;
+    float r = safe_sqrt(1.0f - z * z);
+    float phi = 2.0f * kPi * u.y;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+// Per unit solid angle: 1/(2 pi) for z >= 0, else 0.
+CANDELA_HD inline float uniform_hemisphere_pdf(Vec3f w) { return w.z >= 0.0f ? kInv2Pi : 0.0f; }
+
+// Cosine-weighted direction on the hemisphere z >= 0 (Malley's method: a uniform disk point
+// lifted onto the hemisphere has density cos(theta)/pi).
+CANDELA_HD inline Vec3f sample_cosine_hemisphere(Vec2f u) {
+    Vec2f d = sample_concentric_disk(u);
+    float z = safe_sqrt(1.0f - d.x * d.x - d.y * d.y);
+    return {d.x, d.y, z};
+}
+// Per unit solid angle: cos(theta)/pi for z >= 0, else 0.
+CANDELA_HD inline float cosine_hemisphere_pdf(Vec3f w) { return w.z >= 0.0f ? w.z * kInvPi : 0.0f; }
+
+// Uniform direction in the cone of half-angle theta_max around +z. Works with 1 - cos(theta)
+// rather than cos(theta), so narrow cones (distant sphere lights) keep their precision.
+CANDELA_HD inline Vec3f sample_uniform_cone(Vec2f u, float cos_theta_max) {
+    float one_minus_cos = u.x * (1.0f - cos_theta_max);
+    float z = 1.0f - one_minus_cos;
+    float r = safe_sqrt(one_minus_cos * (2.0f - one_minus_cos));  // sin(theta), cancellation-free
+    float phi = 2.0f * kPi * u.y;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+// Per unit solid angle: 1 / (2 pi (1 - cos_theta_max)) inside the cone, else 0.
+CANDELA_HD inline float uniform_cone_pdf(Vec3f w, float cos_theta_max) {
+    return w.z >= cos_theta_max ? 1.0f / (2.0f * kPi * (1.0f - cos_theta_max)) : 0.0f;
+}
+
+// ---- triangle --------------------------------------------------------------------------------
+
+// Uniform barycentrics (b0, b1, b2) of a triangle p0 p1 p2 (the point is b0 p0 + b1 p1 + b2 p2),
+// by Heitz's low-distortion square-to-triangle map (2019, "A Low-Distortion Map Between Triangle
+// and Square"): no square root, and strata stay compact.
+CANDELA_HD inline Vec3f sample_uniform_triangle(Vec2f u) {
+    float b0, b1;
+    if (u.x < u.y) {
+        b0 = u.x / 2.0f;
+        b1 = u.y - b0;
+    } else {
+        b1 = u.y / 2.0f;
+        b0 = u.x - b1;
+    }
+    return {b0, b1, 1.0f - b0 - b1};
+}
+// Per unit area of a triangle of area `area`: 1/area (the map is uniform in area).
+CANDELA_HD inline float uniform_triangle_pdf(float area) { return 1.0f / area; }
+
+// ---- 1D tent ---------------------------------------------------------------------------------
+
+// A value in [-radius, radius] with the tent density (radius - |x|) / radius^2: each half
+// inverts its quadratic CDF (smallpt's dx = r1 < 1 ? sqrt(r1) - 1 : 1 - sqrt(2 - r1)).
+CANDELA_HD inline float sample_tent(float u, float radius) {
+    float t = u < 0.5f ? std::sqrt(2.0f * u) - 1.0f : 1.0f - std::sqrt(2.0f - 2.0f * u);
+    return t * radius;
+}
+// Per unit length: max(0, radius - |x|) / radius^2.
+CANDELA_HD inline float tent_pdf(float x, float radius) {
+    float d = radius - std::abs(x);
+    return d > 0.0f ? d / (radius * radius) : 0.0f;
+}
+
+}  // namespace candela

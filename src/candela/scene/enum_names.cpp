@@ -1,0 +1,107 @@
+#include "candela/scene/enum_names.h"
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace candela {
+
+namespace {
+
+// Each table lists the names in the enum's declaration order, so a value's name is
+// table[underlying value]. Adding an enumerator means adding its name here.
+constexpr std::array<std::string_view, 4> kIntegratorTypeNames = {"normals", "depth", "albedo",
+                                                                  "ao"};
+constexpr std::array<std::string_view, 4> kFilterTypeNames = {"box", "tent", "gaussian", "smallpt"};
+constexpr std::array<std::string_view, 4> kTonemapNames = {"clamp", "exposure", "reinhard", "aces"};
+constexpr std::array<std::string_view, 2> kTransferNames = {"srgb", "gamma"};
+
+template <class E, size_t N>
+std::string_view name_of(const std::array<std::string_view, N>& table, E value) {
+    auto i = static_cast<size_t>(value);
+    return i < N ? table[i] : std::string_view("unknown");
+}
+
+template <class E, size_t N>
+std::optional<E> value_of(const std::array<std::string_view, N>& table, std::string_view name) {
+    for (size_t i = 0; i < N; ++i)
+        if (table[i] == name) return static_cast<E>(i);
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::string_view integrator_type_name(IntegratorType type) {
+    return name_of(kIntegratorTypeNames, type);
+}
+std::string_view filter_type_name(FilterType type) { return name_of(kFilterTypeNames, type); }
+std::string_view tonemap_name(Tonemap tonemap) { return name_of(kTonemapNames, tonemap); }
+std::string_view transfer_name(Transfer transfer) { return name_of(kTransferNames, transfer); }
+
+std::optional<IntegratorType> parse_integrator_type(std::string_view name) {
+    return value_of<IntegratorType>(kIntegratorTypeNames, name);
+}
+std::optional<FilterType> parse_filter_type(std::string_view name) {
+    return value_of<FilterType>(kFilterTypeNames, name);
+}
+std::optional<Tonemap> parse_tonemap(std::string_view name) {
+    return value_of<Tonemap>(kTonemapNames, name);
+}
+std::optional<Transfer> parse_transfer(std::string_view name) {
+    return value_of<Transfer>(kTransferNames, name);
+}
+
+std::span<const std::string_view> integrator_type_names() { return kIntegratorTypeNames; }
+std::span<const std::string_view> filter_type_names() { return kFilterTypeNames; }
+std::span<const std::string_view> tonemap_names() { return kTonemapNames; }
+std::span<const std::string_view> transfer_names() { return kTransferNames; }
+
+std::string names_list(std::span<const std::string_view> names) {
+    std::vector<std::string_view> sorted(names.begin(), names.end());
+    std::sort(sorted.begin(), sorted.end());
+    std::string out;
+    for (std::string_view n : sorted) {
+        if (!out.empty()) out += ", ";
+        out += n;
+    }
+    return out;
+}
+
+// The optimal-string-alignment variant of Damerau-Levenshtein (Wagner-Fischer with an extra
+// transposition case), over three rolling rows: names are short, so O(|a| |b|) is nothing.
+size_t edit_distance(std::string_view a, std::string_view b) {
+    const size_t n = b.size();
+    std::vector<size_t> before(n + 1), prev(n + 1), cur(n + 1);
+    for (size_t j = 0; j <= n; ++j) prev[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (size_t j = 1; j <= n; ++j) {
+            size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                cur[j] = std::min(cur[j], before[j - 2] + 1);
+        }
+        std::swap(before, prev);
+        std::swap(prev, cur);
+    }
+    return prev[n];
+}
+
+std::optional<std::string> closest_name(std::string_view typo,
+                                        std::span<const std::string_view> candidates) {
+    constexpr size_t kMaxEdits = 2;
+    std::optional<std::string> best;
+    size_t best_distance = kMaxEdits + 1;
+    for (std::string_view c : candidates) {
+        size_t d = edit_distance(typo, c);
+        // Two edits turn any two-letter word into any other: demand that most of it survives.
+        bool plausible = 2 * d <= std::max(typo.size(), c.size());
+        if (plausible && d < best_distance) {
+            best_distance = d;
+            best = std::string(c);
+        }
+    }
+    return best;
+}
+
+}  // namespace candela

@@ -1,0 +1,46 @@
+#pragma once
+// A loaded scene: everything the renderer needs, in flat arrays referenced by index. Produced by
+// load_scene (scene_loader.h); geometry is already in world space with orientation resolved.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "candela/camera/camera_settings.h"
+#include "candela/film/film_settings.h"
+#include "candela/geometry/shape.h"
+#include "candela/geometry/sphere.h"
+#include "candela/geometry/triangle_mesh.h"
+#include "candela/image/image.h"
+#include "candela/materials/material.h"
+#include "candela/math/rgb.h"
+#include "candela/math/transform.h"
+#include "candela/render/render_settings.h"
+
+namespace candela {
+
+// The `environment` light: an equirectangular radiance map (1x1 for a constant colour).
+struct EnvironmentSettings {
+    Image radiance;
+    float scale = 1.0f;
+    Transform to_world;  // rotates the light's frame into the world
+};
+
+struct Scene {
+    std::filesystem::path file;  // the scene file, as given
+
+    IntegratorSettings integrator;
+    SamplerSettings sampler;
+    CameraSettings camera;
+    FilmSettings film;
+
+    std::vector<Material> materials;
+    std::vector<std::string> material_names;  // parallel to materials
+    std::vector<TriangleMesh> meshes;
+    std::vector<Sphere> spheres;
+    std::vector<Shape> shapes;
+    std::optional<EnvironmentSettings> environment;
+};
+
+}  // namespace candela

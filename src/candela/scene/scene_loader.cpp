@@ -1,0 +1,160 @@
+#include "candela/scene/scene_loader.h"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include "candela/scene/enum_names.h"
+#include "candela/scene/json_cursor.h"
+#include "candela/scene/scene_sections.h"
+
+namespace candela {
+
+namespace {
+
+constexpr std::array<std::string_view, 7> kSections = {"integrator", "sampler", "camera", "film",
+                                                       "materials",  "shapes",  "lights"};
+constexpr std::array<std::string_view, 1> kCameraTypes = {"perspective"};
+constexpr int kMaxResolution = 32768;
+constexpr int kMaxSpp = 1 << 24;
+// |sin| of the angle between up and the view direction below which the camera frame is undefined.
+constexpr double kParallelSine = 1e-6;
+
+std::string format_vec(const Vec3f& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
+
+void read_integrator(JsonCursor c, IntegratorSettings& integrator) {
+    if (auto type = c.get("type"))
+        integrator.type =
+            *parse_integrator_type(type->choice("integrator type", integrator_type_names()));
+    if (auto v = c.get("max_depth")) integrator.max_depth = v->integer(Bounds::at_least(1));
+    if (auto v = c.get("rr_depth")) integrator.rr_depth = v->integer(Bounds::at_least(0));
+    if (auto v = c.get("max_distance")) integrator.max_distance = v->number_f(Bounds::above(0));
+    c.reject_unknown_keys();
+}
+
+void read_sampler(JsonCursor c, SamplerSettings& sampler) {
+    if (auto v = c.get("spp")) sampler.spp = v->integer(Bounds::closed(1, kMaxSpp));
+    if (auto v = c.get("seed")) sampler.seed = v->unsigned_integer();
+    c.reject_unknown_keys();
+}
+
+// The camera frame needs a view direction and an up vector not parallel to it. The error points at
+// the key most likely to be wrong among those given (defaults cannot be wrong on their own).
+void check_camera_frame(const CameraSettings& camera, const JsonCursor& c,
+                        const std::optional<JsonCursor>& position,
+                        const std::optional<JsonCursor>& look_at,
+                        const std::optional<JsonCursor>& up) {
+    Vec3f forward = camera.look_at - camera.position;
+    if (forward == Vec3f(0.0f)) {
+        const JsonCursor& at = look_at ? *look_at : position ? *position : c;
+        at.fail(fmt::format("look_at equals position {}; the camera has no view direction",
+                            format_vec(camera.position)));
+    }
+    Vec3d f = normalize(Vec3d(forward));
+    Vec3d u = normalize(Vec3d(camera.up));
+    if (!(length(cross(f, u)) > kParallelSine)) {
+        const JsonCursor& at = up ? *up : look_at ? *look_at : position ? *position : c;
+        at.fail(
+            fmt::format("up {} is parallel to the view direction {}; the camera cannot tell "
+                        "which way is up",
+                        format_vec(camera.up), format_vec(Vec3f(f))));
+    }
+}
+
+void read_camera(JsonCursor c, CameraSettings& camera) {
+    if (auto type = c.get("type")) type->choice("camera type", kCameraTypes);
+    auto position = c.get("position");
+    auto look_at = c.get("look_at");
+    auto up = c.get("up");
+    if (position) camera.position = position->vec3f();
+    if (look_at) camera.look_at = look_at->vec3f();
+    if (up) {
+        camera.up = up->vec3f();
+        if (camera.up == Vec3f(0.0f)) up->fail_expected("a nonzero up vector");
+    }
+    if (auto v = c.get("fov")) camera.fov_degrees = v->number_f(Bounds::open(0, 180));
+    if (auto v = c.get("resolution")) {
+        auto wh = v->elements(2, "an array of 2 integers [width, height]");
+        camera.width = wh[0].integer(Bounds::closed(1, kMaxResolution));
+        camera.height = wh[1].integer(Bounds::closed(1, kMaxResolution));
+    }
+    if (auto v = c.get("near")) camera.near = v->number_f(Bounds::at_least(0));
+    c.reject_unknown_keys();
+    check_camera_frame(camera, c, position, look_at, up);
+}
+
+void read_film(JsonCursor c, FilmSettings& film) {
+    if (auto v = c.get("filter"))
+        film.filter = *parse_filter_type(v->choice("filter", filter_type_names()));
+    if (auto v = c.get("tonemap"))
+        film.tonemap = *parse_tonemap(v->choice("tone map", tonemap_names()));
+    if (auto v = c.get("exposure")) film.exposure = v->number_f(Bounds::closed_open(0, 1));
+    if (auto v = c.get("transfer"))
+        film.transfer = *parse_transfer(v->choice("transfer", transfer_names()));
+    if (auto v = c.get("gamma")) film.gamma = v->number_f(Bounds::above(0));
+    c.reject_unknown_keys();
+}
+
+std::string read_text_file(const std::filesystem::path& file) {
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec))
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "scene file not found");
+    if (std::filesystem::is_directory(file, ec))
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "is a folder, not a scene file");
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""},
+                         fmt::format("cannot open scene file: {}", std::strerror(errno)));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad())
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "cannot read scene file");
+    return std::move(text).str();
+}
+
+}  // namespace
+
+std::filesystem::path referenced_file(const JsonCursor& file, const std::filesystem::path& folder,
+                                      std::string_view what) {
+    std::string name = file.string();
+    if (name.empty()) file.fail_expected(fmt::format("the name of a {} file", what));
+    // operator/ keeps an absolute name as it is.
+    std::filesystem::path path = folder / std::filesystem::path(name);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        file.fail(fmt::format("{} file {} not found (looked for {})", what, json_quoted(name),
+                              path.string()));
+    return path;
+}
+
+Scene load_scene(const std::filesystem::path& file) {
+    return load_scene_from_string(read_text_file(file), file);
+}
+
+Scene load_scene_from_string(std::string_view json, const std::filesystem::path& file) {
+    JsonDocument document{std::string(json), file.string()};
+    JsonCursor root = document.root();
+    // Unknown sections first: a misspelt "materials" would otherwise surface as an undefined
+    // material in `shapes`, far from the typo.
+    for (std::string_view section : kSections) root.has(section);
+    root.reject_unknown_keys();
+
+    Scene scene;
+    scene.file = file;
+    const std::filesystem::path folder = file.parent_path();
+    if (auto c = root.get("integrator")) read_integrator(*c, scene.integrator);
+    if (auto c = root.get("sampler")) read_sampler(*c, scene.sampler);
+    if (auto c = root.get("camera")) read_camera(*c, scene.camera);
+    if (auto c = root.get("film")) read_film(*c, scene.film);
+    if (auto c = root.get("materials")) read_materials(*c, scene);
+    if (auto c = root.get("shapes")) read_shapes(*c, folder, scene);
+    if (auto c = root.get("lights")) read_lights(*c, folder, scene);
+    return scene;
+}
+
+}  // namespace candela

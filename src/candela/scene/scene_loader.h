@@ -1,0 +1,21 @@
+#pragma once
+// Loads a scene file (JSON, scene format v1: docs/SCENE_FORMAT.md) into a Scene: validates every
+// key, loads the meshes and environment images it names, and moves geometry to world space. Any
+// problem throws SceneError located as "file:line:col: /json/pointer: message"; unknown keys are
+// errors, with a "did you mean" for near misses.
+#include <filesystem>
+#include <string_view>
+
+#include "candela/scene/scene.h"
+
+namespace candela {
+
+// Reads and loads `file`; the location of errors names it as given. Throws SceneError for a
+// missing or unreadable file as well.
+Scene load_scene(const std::filesystem::path& file);
+
+// Loads a scene from JSON text. `file` is the name errors show and the folder relative `file`
+// keys of meshes and images are resolved against (its parent); it need not exist.
+Scene load_scene_from_string(std::string_view json, const std::filesystem::path& file);
+
+}  // namespace candela

@@ -1,0 +1,47 @@
+#pragma once
+// The readers for the parts of a scene file, shared by the scene loader's source files (internal to
+// scene/). Each takes a cursor on its part, fills the Scene, and rejects keys it did not read.
+#include <filesystem>
+#include <string_view>
+#include <utility>
+
+#include "candela/core/error.h"
+#include "candela/math/transform.h"
+#include "candela/scene/json_cursor.h"
+#include "candela/scene/scene.h"
+
+namespace candela {
+
+// `transform`: an array of one-key steps (translate, scale, rotate, matrix), the first listed
+// applied first.
+Transform read_transform(const JsonCursor& steps);
+
+// `materials`: name -> material, in file order.
+void read_materials(JsonCursor materials, Scene& scene);
+
+// `shapes`: meshes (loaded relative to `folder`), quads and spheres; needs the materials.
+void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene);
+
+// `lights`: at most one environment.
+void read_lights(const JsonCursor& lights, const std::filesystem::path& folder, Scene& scene);
+
+// The path a `file` key names, relative to `folder` unless absolute. Fails at the key when there
+// is no such regular file; `what` names the kind ("mesh", "environment image").
+std::filesystem::path referenced_file(const JsonCursor& file, const std::filesystem::path& folder,
+                                      std::string_view what);
+
+// Runs `load` (load_mesh, read_image). A SceneError it throws keeps its own location (the mesh or
+// image file, with line where known) and gains " (referenced by /pointer at scene:line:col)".
+template <class Load>
+auto load_referenced(const JsonCursor& file, Load&& load) {
+    try {
+        return std::forward<Load>(load)();
+    } catch (const SceneError& e) {
+        SourceLocation at = file.document().locate(file.pointer());
+        throw SceneError(e.where(), e.message() + " (referenced by " + at.json_pointer + " at " +
+                                        at.file + ":" + std::to_string(at.line) + ":" +
+                                        std::to_string(at.column) + ")");
+    }
+}
+
+}  // namespace candela

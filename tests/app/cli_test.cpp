@@ -1,0 +1,83 @@
+// The command-line program as a user meets it: exit codes, one-line located errors, outputs.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Run {
+    int exit_code;
+    std::string output;  // stdout and stderr together
+};
+
+Run run_candela(const std::string& args) {
+    std::string cmd = std::string(CANDELA_CLI) + " " + args + " 2>&1";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    EXPECT_NE(pipe, nullptr);
+    std::string out;
+    std::array<char, 4096> buf;
+    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+    int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+fs::path temp_dir(const std::string& name) {
+    fs::path dir = fs::path(CANDELA_TEST_BINARY_DIR) / ("cli_" + name);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+const std::string kScene = std::string(CANDELA_SOURCE_DIR) + "/scenes/cornell-box/scene.json";
+
+TEST(Cli, VersionAndHelpExitZero) {
+    Run v = run_candela("--version");
+    EXPECT_EQ(v.exit_code, 0);
+    EXPECT_NE(v.output.find("candela 0."), std::string::npos) << v.output;
+    Run h = run_candela("render --help");
+    EXPECT_EQ(h.exit_code, 0);
+    for (const char* flag : {"--spp", "--seed", "--threads", "--resolution", "--integrator", "-o"})
+        EXPECT_NE(h.output.find(flag), std::string::npos) << flag;
+}
+
+TEST(Cli, BadSceneGivesOneLocatedLineAndExitTwo) {
+    fs::path dir = temp_dir("bad_scene");
+    fs::path scene = dir / "bad.json";
+    std::ofstream(scene) << "{\n  \"sampler\": {\"spp\": 4},\n  \"camera\": {\"fov\": -3}\n}\n";
+    Run r = run_candela("render " + scene.string() + " -o " + (dir / "x.png").string());
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output.rfind("candela: error: " + scene.string() + ":3:", 0), 0u) << r.output;
+    EXPECT_NE(r.output.find("/camera/fov"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
+TEST(Cli, BadFlagsExitTwo) {
+    EXPECT_EQ(run_candela("render " + kScene + " --resolution 12by4").exit_code, 2);
+    EXPECT_EQ(run_candela("render " + kScene + " --integrator magic").exit_code, 2);
+    EXPECT_EQ(run_candela("render " + kScene + " --spp 0").exit_code, 2);
+    EXPECT_EQ(run_candela("render " + kScene + " -o out.tiff").exit_code, 2);
+    EXPECT_EQ(run_candela("render /no/such/scene.json").exit_code, 2);
+    EXPECT_EQ(run_candela("render").exit_code, 2);
+}
+
+TEST(Cli, RendersWithOverridesToEveryFormat) {
+    fs::path dir = temp_dir("render");
+    std::string outs;
+    for (const char* ext : {".png", ".exr", ".pfm", ".hdr", ".ppm"}) outs += " -o " + (dir / (std::string("img") + ext)).string();
+    Run r = run_candela("render " + kScene + " --spp 1 --resolution 24x16 --threads 2 --integrator normals" + outs);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    for (const char* ext : {".png", ".exr", ".pfm", ".hdr", ".ppm"})
+        EXPECT_GT(fs::file_size(dir / (std::string("img") + ext)), 0u) << ext;
+    EXPECT_NE(r.output.find("24x16, 1 spp, normals"), std::string::npos) << r.output;
+}
+
+}  // namespace

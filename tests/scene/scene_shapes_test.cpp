@@ -1,0 +1,357 @@
+// The scene file's materials, shapes, transforms and lights: every documented key, set to a value
+// other than its default, changes the loaded Scene.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "candela/scene/scene_loader.h"
+#include "scene/scene_test_util.h"
+
+namespace candela {
+namespace {
+
+using test::load_error;
+using test::load_json;
+
+constexpr float kTol = 1e-5f;
+
+// A scene with one material "m" and the given shapes (a JSON array's contents).
+Scene load_shapes(const std::string& shapes) {
+    return load_json(R"({"materials": {"m": {"type": "diffuse"}}, "shapes": [)" + shapes + "]}");
+}
+
+// The unit quad in the z = 0 plane, front +z, with extra keys appended.
+std::string unit_quad(const std::string& extra = "") {
+    return R"({"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0],
+               "material": "m")" +
+           (extra.empty() ? "" : ", " + extra) + "}";
+}
+
+// The normal of a triangle's front face: counter-clockwise winding, right-hand rule.
+Vec3f front_normal(const TriangleMesh& mesh, size_t triangle) {
+    const Vec3f& p0 = mesh.positions[mesh.indices[3 * triangle]];
+    const Vec3f& p1 = mesh.positions[mesh.indices[3 * triangle + 1]];
+    const Vec3f& p2 = mesh.positions[mesh.indices[3 * triangle + 2]];
+    return normalize(cross(p1 - p0, p2 - p0));
+}
+
+void expect_near(const Vec3f& a, const Vec3f& b) {
+    EXPECT_NEAR(a.x, b.x, kTol);
+    EXPECT_NEAR(a.y, b.y, kTol);
+    EXPECT_NEAR(a.z, b.z, kTol);
+}
+
+bool has_position(const TriangleMesh& mesh, const Vec3f& p) {
+    for (const Vec3f& q : mesh.positions)
+        if (length(q - p) < kTol) return true;
+    return false;
+}
+
+// ---- materials
+
+TEST(SceneLoaderMaterials, DiffuseAlbedoIsRead) {
+    Scene grey = load_json(R"({"materials": {"a": {"type": "diffuse", "albedo": 0.25}}})");
+    EXPECT_EQ(std::get<DiffuseMaterial>(grey.materials[0]).albedo, Rgb(0.25f));
+    Scene rgb = load_json(R"({"materials": {"a": {"type": "diffuse", "albedo": [0.1, 0.2, 0.3]}}})");
+    EXPECT_EQ(std::get<DiffuseMaterial>(rgb.materials[0]).albedo, Rgb(0.1f, 0.2f, 0.3f));
+    Scene plain = load_json(R"({"materials": {"a": {"type": "diffuse"}}})");
+    EXPECT_EQ(std::get<DiffuseMaterial>(plain.materials[0]).albedo, Rgb(0.5f));
+}
+
+TEST(SceneLoaderMaterials, MirrorAlbedoIsRead) {
+    Scene s = load_json(R"({"materials": {"a": {"type": "mirror", "albedo": 0.8},
+                                          "b": {"type": "mirror"}}})");
+    EXPECT_EQ(std::get<MirrorMaterial>(s.materials[0]).albedo, Rgb(0.8f));
+    EXPECT_EQ(std::get<MirrorMaterial>(s.materials[1]).albedo, Rgb(1.0f));
+}
+
+TEST(SceneLoaderMaterials, DielectricIorAndTintAreRead) {
+    Scene s = load_json(R"({"materials": {"a": {"type": "dielectric", "ior": 2.4,
+                                                "tint": [1, 0.5, 0.25]},
+                                          "b": {"type": "dielectric"}}})");
+    const auto& a = std::get<DielectricMaterial>(s.materials[0]);
+    EXPECT_EQ(a.ior, 2.4f);
+    EXPECT_EQ(a.tint, Rgb(1.0f, 0.5f, 0.25f));
+    const auto& b = std::get<DielectricMaterial>(s.materials[1]);
+    EXPECT_EQ(b.ior, 1.5f);
+    EXPECT_EQ(b.tint, Rgb(1.0f));
+    EXPECT_EQ(load_error(R"({"materials": {"a": {"type": "dielectric", "ior": 0}}})").message(),
+              "expected a number > 0, got 0");
+}
+
+TEST(SceneLoaderMaterials, NamesKeepFileOrderAndParallelTheMaterials) {
+    Scene s = load_json(R"({"materials": {"zinc": {"type": "mirror"}, "ash": {"type": "diffuse"},
+                                          "glass": {"type": "dielectric"}}})");
+    ASSERT_EQ(s.material_names, (std::vector<std::string>{"zinc", "ash", "glass"}));
+    EXPECT_TRUE(std::holds_alternative<MirrorMaterial>(s.materials[0]));
+    EXPECT_TRUE(std::holds_alternative<DiffuseMaterial>(s.materials[1]));
+    EXPECT_TRUE(std::holds_alternative<DielectricMaterial>(s.materials[2]));
+}
+
+TEST(SceneLoaderMaterials, KeysOfOtherTypesAreUnknown) {
+    SceneError e = load_error(R"({"materials": {"a": {"type": "diffuse", "ior": 1.5}}})");
+    EXPECT_EQ(e.where().json_pointer, "/materials/a");
+    EXPECT_EQ(e.message(), "unknown key \"ior\"; expected one of: albedo, type");
+    EXPECT_EQ(load_error(R"({"materials": {"a": {"albedo": 0.5}}})").message(),
+              "missing required key \"type\"");
+}
+
+// ---- shapes: common keys
+
+TEST(SceneLoaderShapes, MaterialNamesAnIndex) {
+    Scene s = load_json(R"({"materials": {"a": {"type": "diffuse"}, "b": {"type": "mirror"}},
+                           "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                                       "material": "b"},
+                                      {"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                                       "material": "a"}]})");
+    EXPECT_EQ(s.shapes[0].material, 1u);
+    EXPECT_EQ(s.shapes[1].material, 0u);
+    EXPECT_EQ(load_error(R"({"shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                                         "material": "a"}]})")
+                  .message(),
+              "unknown material \"a\"; no materials are defined");
+}
+
+TEST(SceneLoaderShapes, EmissionMakesAnAreaLight) {
+    Scene s = load_shapes(unit_quad(R"("emission": [1, 2, 3])") + "," + unit_quad(R"("emission": 5)") +
+                          "," + unit_quad());
+    EXPECT_EQ(s.shapes[0].emission, Rgb(1, 2, 3));
+    EXPECT_EQ(s.shapes[1].emission, Rgb(5.0f));
+    EXPECT_TRUE(s.shapes[2].emission.is_black());
+}
+
+TEST(SceneLoaderShapes, TwoSidedIsRead) {
+    Scene s = load_shapes(unit_quad(R"("emission": 1, "two_sided": true)") + "," + unit_quad());
+    EXPECT_TRUE(s.shapes[0].two_sided);
+    EXPECT_FALSE(s.shapes[1].two_sided);
+    EXPECT_EQ(load_error("{\"materials\": {\"m\": {\"type\": \"diffuse\"}}, \"shapes\": [" +
+                         unit_quad(R"("two_sided": 1)") + "]}")
+                  .message(),
+              "expected true or false, got 1");
+}
+
+TEST(SceneLoaderShapes, ShapesIndexTheirKindsArrays) {
+    Scene s = load_shapes(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"},)" +
+                          unit_quad() + "," +
+                          R"({"type": "sphere", "center": [0, 0, 0], "radius": 2, "material": "m"},
+                             {"type": "mesh", "file": "meshes/triangle.obj", "material": "m"})");
+    ASSERT_EQ(s.shapes.size(), 4u);
+    EXPECT_EQ(s.shapes[0].kind, ShapeKind::kSphere);
+    EXPECT_EQ(s.shapes[0].index, 0u);
+    EXPECT_EQ(s.shapes[1].kind, ShapeKind::kMesh);
+    EXPECT_EQ(s.shapes[1].index, 0u);
+    EXPECT_EQ(s.shapes[2].kind, ShapeKind::kSphere);
+    EXPECT_EQ(s.shapes[2].index, 1u);
+    EXPECT_EQ(s.spheres[1].radius, 2.0);
+    EXPECT_EQ(s.shapes[3].kind, ShapeKind::kMesh);
+    EXPECT_EQ(s.shapes[3].index, 1u);
+    EXPECT_EQ(s.meshes[1].triangle_count(), 1u);
+}
+
+// ---- spheres
+
+TEST(SceneLoaderShapes, SphereCenterAndRadiusAreReadInDouble) {
+    Scene s = load_shapes(
+        R"({"type": "sphere", "center": [100000.5, -2, 3], "radius": 100000.25, "material": "m"})");
+    ASSERT_EQ(s.spheres.size(), 1u);
+    EXPECT_EQ(s.spheres[0].center, Vec3d(100000.5, -2, 3));
+    EXPECT_EQ(s.spheres[0].radius, 100000.25);
+    EXPECT_FALSE(s.spheres[0].reverse_orientation);
+}
+
+TEST(SceneLoaderShapes, SphereReverseOrientationIsRead) {
+    Scene s = load_shapes(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m",
+                              "reverse_orientation": true})");
+    EXPECT_TRUE(s.spheres[0].reverse_orientation);
+}
+
+// ---- quads
+
+TEST(SceneLoaderShapes, QuadCornerAndEdgesSpanIt) {
+    Scene s = load_shapes(
+        R"({"type": "quad", "corner": [1, 2, 3], "edge1": [0, 0, 2], "edge2": [-3, 0, 0], "material": "m"})");
+    const TriangleMesh& q = s.meshes[0];
+    ASSERT_EQ(q.triangle_count(), 2u);
+    EXPECT_TRUE(has_position(q, {1, 2, 3}));
+    EXPECT_TRUE(has_position(q, {1, 2, 5}));
+    EXPECT_TRUE(has_position(q, {-2, 2, 5}));
+    EXPECT_TRUE(has_position(q, {-2, 2, 3}));
+    // Front: cross(edge1, edge2) = cross(+z, -x) = -y.
+    expect_near(front_normal(q, 0), {0, -1, 0});
+    expect_near(front_normal(q, 1), {0, -1, 0});
+}
+
+TEST(SceneLoaderShapes, QuadReverseOrientationFlipsItsFront) {
+    Scene s = load_shapes(unit_quad(R"("reverse_orientation": true)") + "," + unit_quad());
+    expect_near(front_normal(s.meshes[0], 0), {0, 0, -1});
+    expect_near(front_normal(s.meshes[1], 0), {0, 0, 1});
+}
+
+// ---- meshes
+
+TEST(SceneLoaderShapes, MeshFileIsRelativeToTheSceneFile) {
+    Scene s = load_shapes(R"({"type": "mesh", "file": "meshes/triangle.obj", "material": "m"})");
+    const TriangleMesh& m = s.meshes[0];
+    ASSERT_EQ(m.triangle_count(), 1u);
+    EXPECT_TRUE(has_position(m, {0, 0, 0}));
+    EXPECT_TRUE(has_position(m, {1, 0, 0}));
+    EXPECT_TRUE(has_position(m, {0, 1, 0}));
+    expect_near(front_normal(m, 0), {0, 0, 1});
+}
+
+TEST(SceneLoaderShapes, MeshTransformMovesItToWorldSpace) {
+    Scene s = load_shapes(R"({"type": "mesh", "file": "meshes/triangle.obj", "material": "m",
+                              "transform": [{"translate": [0, 0, 7]}]})");
+    EXPECT_TRUE(has_position(s.meshes[0], {1, 0, 7}));
+    EXPECT_FALSE(has_position(s.meshes[0], {1, 0, 0}));
+}
+
+TEST(SceneLoaderShapes, MeshReverseOrientationFlipsItsFront) {
+    Scene s = load_shapes(R"({"type": "mesh", "file": "meshes/triangle.obj", "material": "m",
+                              "reverse_orientation": true})");
+    expect_near(front_normal(s.meshes[0], 0), {0, 0, -1});
+}
+
+TEST(SceneLoaderShapes, MeshErrorKeepsItsFileAndNamesTheShape) {
+    try {
+        load_shapes(R"({"type": "mesh", "file": "meshes/bad_index.obj", "material": "m"})");
+        FAIL() << "loaded a mesh with a bad index";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.where().file, (test::scenes_dir() / "meshes/bad_index.obj").string());
+        EXPECT_EQ(e.where().line, 6);
+        const std::string scene = (test::scenes_dir() / "inline.json").string();
+        EXPECT_NE(e.message().find("(referenced by /shapes/0/file at " + scene + ":1:"),
+                  std::string::npos)
+            << e.message();
+    }
+}
+
+// ---- transforms (on quads, whose vertices are known: corner, +edge1, +edge1+edge2, +edge2)
+
+Vec3f transformed_quad_vertex(const std::string& transform, size_t vertex) {
+    Scene s = load_shapes(unit_quad(R"("transform": )" + transform));
+    return s.meshes[0].positions[vertex];
+}
+
+TEST(SceneLoaderTransform, TranslateMoves) {
+    expect_near(transformed_quad_vertex(R"([{"translate": [1, 2, 3]}])", 0), {1, 2, 3});
+}
+
+TEST(SceneLoaderTransform, ScaleIsUniformOrPerAxis) {
+    expect_near(transformed_quad_vertex(R"([{"scale": 2}])", 2), {2, 2, 0});
+    expect_near(transformed_quad_vertex(R"([{"scale": [3, 4, 5]}])", 2), {3, 4, 0});
+}
+
+TEST(SceneLoaderTransform, RotateIsCounterClockwiseInDegrees) {
+    // 90 degrees about +z takes +x to +y.
+    expect_near(transformed_quad_vertex(R"([{"rotate": {"axis": [0, 0, 1], "angle": 90}}])", 1),
+                {0, 1, 0});
+    // The axis need not be unit length.
+    expect_near(transformed_quad_vertex(R"([{"rotate": {"axis": [0, 0, 5], "angle": 180}}])", 1),
+                {-1, 0, 0});
+}
+
+TEST(SceneLoaderTransform, MatrixIsRowMajor) {
+    const char* translate = R"([{"matrix": [1, 0, 0, 5,  0, 1, 0, 6,  0, 0, 1, 7,  0, 0, 0, 1]}])";
+    expect_near(transformed_quad_vertex(translate, 0), {5, 6, 7});
+    // Row 0 = [1, 2, 0, 0]: x' = x + 2y, so the corner (0, 1, 0) goes to (2, 1, 0).
+    const char* shear = R"([{"matrix": [1, 2, 0, 0,  0, 1, 0, 0,  0, 0, 1, 0,  0, 0, 0, 1]}])";
+    expect_near(transformed_quad_vertex(shear, 3), {2, 1, 0});
+}
+
+TEST(SceneLoaderTransform, StepsApplyInListedOrder) {
+    // (1, 0, 0): rotated to (0, 1, 0), then moved to (1, 1, 0) ...
+    expect_near(transformed_quad_vertex(R"([{"rotate": {"axis": [0, 0, 1], "angle": 90}},
+                                            {"translate": [1, 0, 0]}])",
+                                        1),
+                {1, 1, 0});
+    // ... or moved to (2, 0, 0), then rotated to (0, 2, 0).
+    expect_near(transformed_quad_vertex(R"([{"translate": [1, 0, 0]},
+                                            {"rotate": {"axis": [0, 0, 1], "angle": 90}}])",
+                                        1),
+                {0, 2, 0});
+    // Scale then translate: the translation is not scaled.
+    expect_near(transformed_quad_vertex(R"([{"scale": 2}, {"translate": [1, 0, 0]}])", 1),
+                {3, 0, 0});
+    expect_near(transformed_quad_vertex(R"([{"translate": [1, 0, 0]}, {"scale": 2}])", 1),
+                {4, 0, 0});
+}
+
+TEST(SceneLoaderTransform, MirrorKeepsTheFrontAndReverseOrientationFlipsIt) {
+    Scene s = load_shapes(unit_quad(R"("transform": [{"scale": [-1, 1, 1]}])") + "," +
+                          unit_quad(R"("transform": [{"scale": [-1, 1, 1]}],
+                                       "reverse_orientation": true)"));
+    EXPECT_TRUE(has_position(s.meshes[0], {-1, 1, 0}));
+    expect_near(front_normal(s.meshes[0], 0), {0, 0, 1});
+    expect_near(front_normal(s.meshes[1], 0), {0, 0, -1});
+}
+
+TEST(SceneLoaderTransform, EmptyTransformIsIdentity) {
+    expect_near(transformed_quad_vertex("[]", 2), {1, 1, 0});
+}
+
+TEST(SceneLoaderTransform, ProductOfValidStepsMustStayInvertible) {
+    SceneError e = load_error(R"({"materials": {"m": {"type": "diffuse"}}, "shapes": [)" +
+                              unit_quad(R"("transform": [{"scale": 1e-200}, {"scale": 1e-200}])") +
+                              "]}");
+    EXPECT_EQ(e.where().json_pointer, "/shapes/0/transform");
+    EXPECT_NE(e.message().find("the transform is singular"), std::string::npos) << e.message();
+}
+
+// ---- lights
+
+TEST(SceneLoaderLights, EnvironmentColorIsAOnePixelImage) {
+    Scene s = load_json(R"({"lights": [{"type": "environment", "color": [0.1, 0.2, 0.3]}]})");
+    ASSERT_TRUE(s.environment);
+    EXPECT_EQ(s.environment->radiance.width, 1);
+    EXPECT_EQ(s.environment->radiance.height, 1);
+    EXPECT_EQ(s.environment->radiance.at(0, 0), Rgb(0.1f, 0.2f, 0.3f));
+    EXPECT_EQ(s.environment->scale, 1.0f);
+    EXPECT_TRUE(s.environment->to_world.is_identity());
+    Scene grey = load_json(R"({"lights": [{"type": "environment", "color": 2}]})");
+    EXPECT_EQ(grey.environment->radiance.at(0, 0), Rgb(2.0f));
+}
+
+TEST(SceneLoaderLights, EnvironmentFileIsReadRelativeToTheScene) {
+    Scene s = load_json(R"({"lights": [{"type": "environment", "file": "sky_2x1.hdr"}]})");
+    ASSERT_TRUE(s.environment);
+    const Image& sky = s.environment->radiance;
+    ASSERT_EQ(sky.width, 2);
+    ASSERT_EQ(sky.height, 1);
+    EXPECT_NEAR(sky.at(0, 0).r, 1.0f, 0.01f);
+    EXPECT_NEAR(sky.at(1, 0).r, 0.5f, 0.01f);
+    EXPECT_NEAR(sky.at(1, 0).g, 0.25f, 0.01f);
+    EXPECT_NEAR(sky.at(1, 0).b, 2.0f, 0.02f);
+}
+
+TEST(SceneLoaderLights, EnvironmentScaleIsRead) {
+    Scene s = load_json(R"({"lights": [{"type": "environment", "color": 1, "scale": 3}]})");
+    EXPECT_EQ(s.environment->scale, 3.0f);
+    EXPECT_EQ(load_error(R"({"lights": [{"type": "environment", "color": 1, "scale": -1}]})")
+                  .message(),
+              "expected a number >= 0, got -1");
+}
+
+TEST(SceneLoaderLights, EnvironmentTransformRotatesIt) {
+    Scene s = load_json(R"({"lights": [{"type": "environment", "color": 1,
+                             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 90}}]}]})");
+    // 90 degrees about +y takes +x to -z.
+    Vec3d x = s.environment->to_world.apply_vector(Vec3d(1, 0, 0));
+    EXPECT_NEAR(x.x, 0.0, 1e-12);
+    EXPECT_NEAR(x.z, -1.0, 1e-12);
+}
+
+TEST(SceneLoaderLights, ImageErrorKeepsItsFileAndNamesTheLight) {
+    try {
+        load_json(R"({"lights": [{"type": "environment", "file": "truncated.hdr"}]})");
+        FAIL() << "loaded a truncated image";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.where().file, (test::scenes_dir() / "truncated.hdr").string());
+        EXPECT_NE(e.message().find("(referenced by /lights/0/file at "), std::string::npos)
+            << e.message();
+    }
+}
+
+}  // namespace
+}  // namespace candela
