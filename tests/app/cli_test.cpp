@@ -13,12 +13,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CliResult {
     int exit_code;
     std::string output;  // stdout and stderr together
 };
 
-Run run_candela(const std::string& args) {
+CliResult run_candela(const std::string& args) {
     std::string cmd = std::string(CANDELA_CLI) + " " + args + " 2>&1";
     FILE* pipe = popen(cmd.c_str(), "r");
     EXPECT_NE(pipe, nullptr);
@@ -39,10 +39,10 @@ fs::path temp_dir(const std::string& name) {
 const std::string kScene = std::string(CANDELA_SOURCE_DIR) + "/scenes/cornell-box/scene.json";
 
 TEST(Cli, VersionAndHelpExitZero) {
-    Run v = run_candela("--version");
+    CliResult v = run_candela("--version");
     EXPECT_EQ(v.exit_code, 0);
     EXPECT_NE(v.output.find("candela 0."), std::string::npos) << v.output;
-    Run h = run_candela("render --help");
+    CliResult h = run_candela("render --help");
     EXPECT_EQ(h.exit_code, 0);
     for (const char* flag : {"--spp", "--seed", "--threads", "--resolution", "--integrator", "-o"})
         EXPECT_NE(h.output.find(flag), std::string::npos) << flag;
@@ -52,7 +52,7 @@ TEST(Cli, BadSceneGivesOneLocatedLineAndExitTwo) {
     fs::path dir = temp_dir("bad_scene");
     fs::path scene = dir / "bad.json";
     std::ofstream(scene) << "{\n  \"sampler\": {\"spp\": 4},\n  \"camera\": {\"fov\": -3}\n}\n";
-    Run r = run_candela("render " + scene.string() + " -o " + (dir / "x.png").string());
+    CliResult r = run_candela("render " + scene.string() + " -o " + (dir / "x.png").string());
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_EQ(r.output.rfind("candela: error: " + scene.string() + ":3:", 0), 0u) << r.output;
     EXPECT_NE(r.output.find("/camera/fov"), std::string::npos) << r.output;
@@ -73,7 +73,7 @@ TEST(Cli, RendersWithOverridesToEveryFormat) {
     fs::path dir = temp_dir("render");
     std::string outs;
     for (const char* ext : {".png", ".exr", ".pfm", ".hdr", ".ppm"}) outs += " -o " + (dir / (std::string("img") + ext)).string();
-    Run r = run_candela("render " + kScene + " --spp 1 --resolution 24x16 --threads 2 --integrator normals" + outs);
+    CliResult r = run_candela("render " + kScene + " --spp 1 --resolution 24x16 --threads 2 --integrator normals" + outs);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     for (const char* ext : {".png", ".exr", ".pfm", ".hdr", ".ppm"})
         EXPECT_GT(fs::file_size(dir / (std::string("img") + ext)), 0u) << ext;

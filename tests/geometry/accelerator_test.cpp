@@ -95,8 +95,8 @@ bool is_self_hit(const TestScene& scene, const SurfaceHit& hit, const Vec3f& w, 
     const Shape& shape = scene.shapes[hit.shape_id];
     if (shape.kind == ShapeKind::kMesh) return next.prim_id == hit.prim_id;
     const Sphere& s = scene.spheres[shape.index];
-    Vec3f outward = normalize(Vec3f(Vec3d(hit.p) - s.center));
-    float cos_out = dot(w, outward);
+    // The side is the one spawn_ray picks: by the hit's geometric normal (outward here).
+    float cos_out = dot(w, hit.ng);
     if (cos_out >= 0.0f) return true;
     double chord = 2.0 * s.radius * double(-cos_out);
     return double(next.t) < 0.5 * chord;

@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <filesystem>
+#include <ostream>
 #include <set>
 #include <string>
 
@@ -20,6 +21,9 @@ struct BadScene {
     const char* pointer;
     const char* message;  // a fragment of the message
 };
+
+// gtest prints a failing parameter with this, rather than as raw bytes.
+void PrintTo(const BadScene& bad, std::ostream* os) { *os << bad.file; }
 
 // Locations: a bad value is reported at its first character; an unknown or repeated key at its
 // opening quote, with the pointer of its object; a missing key at its object's opening brace; a
@@ -85,7 +89,7 @@ const BadScene kBadScenes[] = {
      "expected an integer in [1, 16777216], got 0"},
     {"string_with_braces_before_error.json", 4, 51, "/materials/}{",
      "unknown key \"ior\"; expected one of: albedo, type"},
-    {"syntax_missing_colon.json", 2, 22, "",
+    {"syntax_missing_colon.json", 2, 21, "",
      "expected ':'"},
     {"trailing_comma.json", 4, 1, "",
      "no comma after the last element"},

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "candela/core/error.h"
+#include "candela/geometry/ray_offset.h"
 #include "candela/geometry/sphere_intersection.h"
 #include "candela/math/constants.h"
 
@@ -146,8 +147,11 @@ struct Accelerator::Impl {
         h.shape_id = rh.hit.geomID;
         h.prim_id = tri;
         // From the barycentrics rather than o + t d: the error is then relative to the vertex
-        // coordinates, which ray_offset.h's bound covers, not to the ray length.
+        // coordinates, not to the ray length. The point is a convex combination, so it lies in
+        // the triangle's plane up to the rounding of that sum: gamma(7) (|b0 p0| + |b1 p1| +
+        // |b2 p2|) bounds it (pbrt-v4, 6.8.5; barycentric error moves p within the plane only).
         h.p = p0 * b0 + p1 * b1 + p2 * b2;
+        h.p_error = (abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * rounding_gamma(7);
         h.ng = normalize(cross(p1 - p0, p2 - p0));
         h.ns = h.ng;
         if (!mesh.normals.empty()) {
@@ -171,6 +175,9 @@ struct Accelerator::Impl {
         Vec3d p = project_to_sphere(s, Vec3d(ray.o) + Vec3d(ray.d) * double(h.t));
         Vec3d n = (p - s.center) / s.radius;
         h.p = Vec3f(p);
+        // The double projection is exact to far below float precision; rounding it to float
+        // dominates. gamma(5) |p| as pbrt-v4 uses for reprojected sphere points (6.8.5).
+        h.p_error = abs(h.p) * rounding_gamma(5);
         h.ng = normalize(Vec3f(s.reverse_orientation ? -n : n));
         h.ns = h.ng;
         // The environment's convention: +Y up, u = atan2(x, -z) / 2pi, v = acos(y) / pi.

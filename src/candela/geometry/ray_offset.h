@@ -1,12 +1,12 @@
 #pragma once
-// Spawning rays from surfaces without self-intersection. A hit point is computed on the surface,
-// so it is off by a few ulps at most; we move the origin off the surface along the geometric
-// normal by a bound that covers that error, in integer ulps so it scales with the magnitude of
-// the coordinates (Wächter and Binder, "A Fast and Robust Method for Avoiding Self-Intersection",
-// Ray Tracing Gems, ch. 6). No per-call epsilon.
-#include <bit>
+// Spawning rays from surfaces without self-intersection, by error bounds rather than epsilons
+// (pbrt-v4's approach; Pharr, Jakob, Humphreys, "Physically Based Rendering", 4th ed., 6.8).
+// A hit point is computed on the surface with a conservative per-axis bound on its rounding
+// error (SurfaceHit::p_error). Moving the origin along the geometric normal by the projection of
+// that error box onto the normal, then one float further away, puts it strictly on the chosen
+// side of the true surface, so the new ray cannot hit the surface where it starts.
 #include <cmath>
-#include <cstdint>
+#include <limits>
 
 #include "candela/core/platform.h"
 #include "candela/geometry/surface_hit.h"
@@ -14,39 +14,43 @@
 
 namespace candela {
 
-namespace detail {
-// Near the origin ulps get too small to cover the error, so there a fixed offset is used.
-inline constexpr float kOffsetOrigin = 1.0f / 32.0f;
-inline constexpr float kOffsetFloatScale = 1.0f / 65536.0f;
-inline constexpr float kOffsetIntScale = 256.0f;
-
-CANDELA_HD inline float offset_coordinate(float p, float n) {
-    if (std::abs(p) < kOffsetOrigin) return p + kOffsetFloatScale * n;
-    auto ulps = static_cast<int32_t>(kOffsetIntScale * n);
-    int32_t bits = std::bit_cast<int32_t>(p);
-    // For negative p the bit pattern grows with the magnitude, so the step is mirrored.
-    return std::bit_cast<float>(bits + (p < 0.0f ? -ulps : ulps));
+// gamma(n) = n u / (1 - n u), u = 2^-24: the relative bound of n successive float roundings
+// (Higham, "Accuracy and Stability of Numerical Algorithms", 3.1).
+CANDELA_HD constexpr float rounding_gamma(int n) {
+    constexpr float u = std::numeric_limits<float>::epsilon() * 0.5f;
+    return (float(n) * u) / (1.0f - float(n) * u);
 }
-}  // namespace detail
 
-// p moved off the surface to the side of unit geometric normal n.
-CANDELA_HD inline Vec3f offset_ray_origin(const Vec3f& p, const Vec3f& n) {
-    return {detail::offset_coordinate(p.x, n.x), detail::offset_coordinate(p.y, n.y),
-            detail::offset_coordinate(p.z, n.z)};
+// p moved off the surface to the side of unit geometric normal n, out of its error box.
+CANDELA_HD inline Vec3f offset_ray_origin(const Vec3f& p, const Vec3f& p_error, const Vec3f& n) {
+    float d = dot(abs(n), p_error);
+    Vec3f offset = n * d;
+    Vec3f po = p + offset;
+    // The addition above rounds, possibly back towards the surface: step one float outwards.
+    for (int i = 0; i < 3; ++i) {
+        if (offset[i] > 0.0f)
+            po[i] = std::nextafter(po[i], kInfinity);
+        else if (offset[i] < 0.0f)
+            po[i] = std::nextafter(po[i], -kInfinity);
+    }
+    return po;
 }
 
 // A ray leaving the hit in direction w (either side of the surface).
 CANDELA_HD inline Ray spawn_ray(const SurfaceHit& hit, const Vec3f& w) {
     Vec3f n = dot(w, hit.ng) >= 0.0f ? hit.ng : -hit.ng;
-    return Ray{offset_ray_origin(hit.p, n), w, 0.0f, kInfinity};
+    return Ray{offset_ray_origin(hit.p, hit.p_error, n), w, 0.0f, kInfinity};
 }
 
-// A shadow ray from the hit towards point `target` (itself on a surface with unit geometric
-// normal target_n): both ends are offset, and tmax = 1 stops it at the target's offset point.
-CANDELA_HD inline Ray spawn_ray_to(const SurfaceHit& hit, const Vec3f& target, const Vec3f& target_n) {
-    Vec3f o = offset_ray_origin(hit.p, dot(target - hit.p, hit.ng) >= 0.0f ? hit.ng : -hit.ng);
-    Vec3f end = offset_ray_origin(target, dot(o - target, target_n) >= 0.0f ? target_n : -target_n);
-    return Ray{o, end - o, 0.0f, 1.0f};
+// Fraction of a shadow ray's length left out at its far end, so that it does not hit the surface
+// of the point it aims at (that point's own error box is not known here).
+inline constexpr float kShadowEpsilon = 1e-4f;
+
+// A shadow ray from the hit towards point `target`; tmax stops it just before the target.
+CANDELA_HD inline Ray spawn_ray_to(const SurfaceHit& hit, const Vec3f& target) {
+    Vec3f n = dot(target - hit.p, hit.ng) >= 0.0f ? hit.ng : -hit.ng;
+    Vec3f o = offset_ray_origin(hit.p, hit.p_error, n);
+    return Ray{o, target - o, 0.0f, 1.0f - kShadowEpsilon};
 }
 
 }  // namespace candela

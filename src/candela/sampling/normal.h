@@ -11,7 +11,7 @@ namespace candela {
 
 // The inverse error function on (-1, 1), relative error below ~1e-6 (Giles 2011, "Approximating
 // the erfinv function", GPU Computing Gems Jade, single-precision version). At x = +-1 it returns
-// a finite +-3.9 (just beyond erfinv of the floats nearest +-1) instead of infinity.
+// a finite +-3.92 (just beyond erfinv of the floats nearest +-1, +-3.83) instead of infinity.
 CANDELA_HD inline float erfinv(float x) {
     // w = -log(1 - x^2); the fma keeps 1 - x^2 accurate near |x| = 1. The floor 2^-24 is below
     // 1 - x^2 = 2^-23 of the float nearest 1, and keeps w within the tail polynomial's range.
@@ -44,8 +44,8 @@ CANDELA_HD inline float erfinv(float x) {
 }
 
 // A standard normal value from u in [0, 1): Phi^-1(u) = sqrt(2) erfinv(2u - 1). The argument is
-// clamped to |2u - 1| <= 1 - 2^-24, so u = 0 gives about -5.3 (not -infinity), symmetric to the
-// largest float below 1.
+// clamped to |2u - 1| <= 1 - 2^-24, so u = 0 gives about -5.4 (not -infinity); the largest u
+// below 1 gives about +5.3.
 CANDELA_HD inline float sample_standard_normal(float u) {
     float t = clamp(2.0f * u - 1.0f, -kOneMinusEpsilon, kOneMinusEpsilon);
     return 1.41421356237309504880f * erfinv(t);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cfloat>
 #include <climits>
 #include <cmath>
@@ -36,6 +37,10 @@ char previous_token_char(std::string_view text, size_t offset) {
     return '\0';
 }
 
+bool is_literal_char(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-';
+}
+
 std::string_view number_at(std::string_view text, size_t offset) {
     size_t end = text.find_first_not_of("0123456789+-.eE", offset);
     return text.substr(offset, end == std::string_view::npos ? end : end - offset);
@@ -67,8 +72,12 @@ JsonDocument::JsonDocument(std::string text, std::string file)
     try {
         root_ = std::make_unique<Json>(Json::parse(text_, note_keys));
     } catch (const Json::parse_error& e) {
-        // e.byte is the 1-based index of the last character read: the one that broke the syntax.
+        // e.byte is the 1-based index of the last character read: the one that broke the syntax,
+        // or the end of an unexpected number or literal, which is better shown at its start.
         size_t offset = e.byte > 0 ? e.byte - 1 : 0;
+        while (offset > 0 && offset < text_.size() && is_literal_char(text_[offset]) &&
+               is_literal_char(text_[offset - 1]))
+            --offset;
         TextPosition p = text_position(text_, offset);
         std::string message = syntax_error_message(e.what());
         char bad = offset < text_.size() ? text_[offset] : '\0';
@@ -91,6 +100,7 @@ JsonDocument::JsonDocument(std::string text, std::string file)
                 SourceLocation{file_, p.line, p.column, found->pointer.substr(0, slash)},
                 "duplicate key " + json_quoted(found->pointer.substr(slash + 1)));
         }
+        throw SceneError(SourceLocation{file_, 0, 0, ""}, "duplicate key in a JSON object");
     }
 }
 

@@ -18,6 +18,7 @@
 
 namespace candela {
 namespace {
+
 [[noreturn]] void fail_at(const std::string& file, int line, const std::string& message) {
     throw SceneError(SourceLocation{file, line, 0, {}}, message);
 }
@@ -32,31 +33,33 @@ struct VertexLayout {
 };
 
 VertexLayout vertex_layout(const PlyElement& e, const std::string& file) {
+    constexpr size_t kMissing = std::numeric_limits<size_t>::max();
     VertexLayout layout;
     layout.slot.assign(e.properties.size(), -1);
-    auto find = [&](std::string_view name) -> int {
+    auto find = [&](std::string_view name) {
         for (size_t i = 0; i < e.properties.size(); ++i)
-            if (e.properties[i].name == name) return static_cast<int>(i);
-        return -1;
+            if (e.properties[i].name == name) return i;
+        return kMissing;
     };
-    auto assign = [&](int property, int slot) {
-        if (e.properties[static_cast<size_t>(property)].list_count)
+    auto assign = [&](size_t property, int slot) {
+        if (e.properties[property].list_count)
             fail_at(file, e.line,
                     fmt::format("vertex property \"{}\" must be a scalar, not a list",
-                                e.properties[static_cast<size_t>(property)].name));
-        layout.slot[static_cast<size_t>(property)] = slot;
+                                e.properties[property].name));
+        layout.slot[property] = slot;
     };
-    const std::array<int, 3> position = {find("x"), find("y"), find("z")};
-    for (int i = 0; i < 3; ++i) {
-        if (position[static_cast<size_t>(i)] < 0)
-            fail_at(file, e.line, fmt::format("the vertex element has no \"{}\" property", "xyz"[i]));
-        assign(position[static_cast<size_t>(i)], kX + i);
+    for (const int slot : {kX, kY, kZ}) {
+        const std::string_view name = std::array{"x", "y", "z"}[static_cast<size_t>(slot - kX)];
+        const size_t p = find(name);
+        if (p == kMissing)
+            fail_at(file, e.line, fmt::format("the vertex element has no \"{}\" property", name));
+        assign(p, slot);
     }
-    const std::array<int, 3> normal = {find("nx"), find("ny"), find("nz")};
-    const int normal_parts =
-        static_cast<int>(std::count_if(normal.begin(), normal.end(), [](int i) { return i >= 0; }));
+    const std::array<size_t, 3> normal = {find("nx"), find("ny"), find("nz")};
+    const auto normal_parts =
+        std::count_if(normal.begin(), normal.end(), [](size_t p) { return p != kMissing; });
     if (normal_parts == 3) {
-        for (int i = 0; i < 3; ++i) assign(normal[static_cast<size_t>(i)], kNx + i);
+        for (size_t i = 0; i < 3; ++i) assign(normal[i], kNx + static_cast<int>(i));
         layout.has_normals = true;
     } else if (normal_parts > 0) {
         fail_at(file, e.line, "the vertex element has only some of the normal properties nx, ny, nz");
@@ -65,8 +68,8 @@ VertexLayout vertex_layout(const PlyElement& e, const std::string& file) {
     constexpr std::array<std::array<std::string_view, 2>, 4> kUvNames = {
         {{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}}};
     for (const auto& [u_name, v_name] : kUvNames) {
-        const int u = find(u_name), v = find(v_name);
-        if (u >= 0 && v >= 0) {
+        const size_t u = find(u_name), v = find(v_name);
+        if (u != kMissing && v != kMissing) {
             assign(u, kU);
             assign(v, kV);
             layout.has_uvs = true;

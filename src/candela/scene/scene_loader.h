@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "candela/core/error.h"
 #include "candela/scene/scene.h"
 
 namespace candela {
