@@ -157,6 +157,16 @@ TEST(SceneErrorLocation, UnknownKeyPointsAtTheKeyOfAnEscapedName) {
     EXPECT_EQ(e.message(), "unknown key \"tnit\"; expected one of: albedo, type");
 }
 
+TEST(SceneErrorLocation, DuplicateKeyIsReportedAtItsSecondOccurrence) {
+    const std::string json = "{\"materials\": {\"a/b\": {\"type\": \"diffuse\"},\n"
+                             "                \"a/b\": {\"type\": \"mirror\"}}}";
+    SceneError e = test::load_error(json);
+    EXPECT_EQ(e.where().json_pointer, "/materials");
+    EXPECT_EQ(e.where().line, 2);
+    EXPECT_EQ(e.where().column, 17);
+    EXPECT_EQ(e.message(), "duplicate key \"a/b\"");
+}
+
 TEST(SceneErrorLocation, SyntaxErrorInALaterLine) {
     const std::string json = "{\n  \"sampler\": {\"spp\": 4},\n  \"camera\": {\"fov\": 40,}\n}";
     SceneError e = test::load_error(json);

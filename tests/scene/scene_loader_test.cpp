@@ -229,6 +229,19 @@ TEST(SceneLoader, LoadsEverySectionFromAFile) {
     EXPECT_EQ(s.environment->scale, 0.5f);
 }
 
+TEST(SceneLoader, EveryExampleSceneLoads) {
+    const std::filesystem::path scenes = std::filesystem::path(CANDELA_SOURCE_DIR) / "scenes";
+    int loaded = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(scenes)) {
+        const std::filesystem::path file = entry.path() / "scene.json";
+        if (!std::filesystem::exists(file)) continue;
+        Scene s = load_scene(file);
+        EXPECT_FALSE(s.shapes.empty()) << file;
+        ++loaded;
+    }
+    EXPECT_GE(loaded, 1);
+}
+
 TEST(SceneLoader, MissingSceneFileIsNamed) {
     const std::filesystem::path file = test::scenes_dir() / "no_such_scene.json";
     try {

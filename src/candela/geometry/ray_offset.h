@@ -26,11 +26,13 @@ CANDELA_HD inline Vec3f offset_ray_origin(const Vec3f& p, const Vec3f& p_error, 
     float d = dot(abs(n), p_error);
     Vec3f offset = n * d;
     Vec3f po = p + offset;
-    // The addition above rounds, possibly back towards the surface: step one float outwards.
+    // The addition above rounds, possibly back towards the surface: step one float further out
+    // along n. The step follows n, not the offset, so that an exact point (zero error, e.g. on a
+    // plane through the origin) still leaves the surface: Embree counts hits at t = tmin = 0.
     for (int i = 0; i < 3; ++i) {
-        if (offset[i] > 0.0f)
+        if (n[i] > 0.0f)
             po[i] = std::nextafter(po[i], kInfinity);
-        else if (offset[i] < 0.0f)
+        else if (n[i] < 0.0f)
             po[i] = std::nextafter(po[i], -kInfinity);
     }
     return po;

@@ -37,6 +37,19 @@ char previous_token_char(std::string_view text, size_t offset) {
     return '\0';
 }
 
+// The key a pointer token names: "~1" stands for "/" and "~0" for "~" (RFC 6901).
+std::string unescape_pointer_token(std::string_view token) {
+    std::string key;
+    for (size_t i = 0; i < token.size(); ++i) {
+        if (token[i] == '~' && i + 1 < token.size()) {
+            key += token[++i] == '1' ? '/' : '~';
+        } else {
+            key += token[i];
+        }
+    }
+    return key;
+}
+
 bool is_literal_char(char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-';
 }
@@ -98,7 +111,8 @@ JsonDocument::JsonDocument(std::string text, std::string file)
             TextPosition p = text_position(text_, found->span.key_offset);
             throw SceneError(
                 SourceLocation{file_, p.line, p.column, found->pointer.substr(0, slash)},
-                "duplicate key " + json_quoted(found->pointer.substr(slash + 1)));
+                "duplicate key " +
+                    json_quoted(unescape_pointer_token(found->pointer.substr(slash + 1))));
         }
         throw SceneError(SourceLocation{file_, 0, 0, ""}, "duplicate key in a JSON object");
     }
@@ -172,9 +186,8 @@ std::string JsonCursor::describe() const {
         case Json::value_t::array: {
             if (value_->empty()) return "an empty array";
             // A short array of plain values reads best as itself: "got [0, 1]".
-            bool plain = std::none_of(value_->begin(), value_->end(), [](const Json& e) {
-                return e.is_structured();
-            });
+            bool plain = std::none_of(value_->begin(), value_->end(),
+                                      [](const Json& e) { return e.is_structured(); });
             std::string shown = "[";
             for (size_t i = 0; plain && i < value_->size(); ++i)
                 shown += (i > 0 ? ", " : "") + (*value_)[i].dump();
