@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <string>
 
 #include "candela/render/renderer.h"
+#include "candela/scene/enum_names.h"
 #include "support/test_scenes.h"
 
 namespace candela {
@@ -36,7 +38,11 @@ INSTANTIATE_TEST_SUITE_P(AllDebugIntegrators, Determinism,
                          ::testing::Values(std::pair{IntegratorType::kAo, FilterType::kBox},
                                            std::pair{IntegratorType::kNormals, FilterType::kTent},
                                            std::pair{IntegratorType::kDepth, FilterType::kGaussian},
-                                           std::pair{IntegratorType::kAlbedo, FilterType::kSmallpt}));
+                                           std::pair{IntegratorType::kAlbedo, FilterType::kSmallpt}),
+                         [](const auto& param_info) {
+                             return std::string(integrator_type_name(param_info.param.first)) + "_" +
+                                    std::string(filter_type_name(param_info.param.second));
+                         });
 
 }  // namespace
 }  // namespace candela

@@ -10,17 +10,9 @@
 #include <vector>
 
 #include "candela/core/error.h"
+#include "support/printers.h"
 
 namespace candela {
-
-// Readable failure messages for the vector types.
-[[maybe_unused]] static void PrintTo(const Vec3f& v, std::ostream* os) {
-    *os << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-}
-[[maybe_unused]] static void PrintTo(const Vec2f& v, std::ostream* os) {
-    *os << "(" << v.x << ", " << v.y << ")";
-}
-
 namespace {
 
 std::filesystem::path fixture(const std::string& name) {

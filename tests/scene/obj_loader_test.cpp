@@ -12,29 +12,14 @@
 #include <vector>
 
 #include "candela/core/error.h"
+#include "support/fixtures.h"
+#include "support/printers.h"
 
 namespace candela {
 
-// Readable failure messages for the vector types.
-[[maybe_unused]] static void PrintTo(const Vec3f& v, std::ostream* os) {
-    *os << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-}
-[[maybe_unused]] static void PrintTo(const Vec2f& v, std::ostream* os) {
-    *os << "(" << v.x << ", " << v.y << ")";
-}
-
 namespace {
 
-std::string fixture(const std::string& name) {
-    const std::filesystem::path path = std::filesystem::path(CANDELA_TEST_DATA_DIR) / "meshes" / name;
-    std::ifstream in(path, std::ios::binary);
-    EXPECT_TRUE(in) << "missing fixture " << path;
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-TriangleMesh parse_fixture(const std::string& name) { return parse_obj(fixture(name), name); }
+TriangleMesh parse_fixture(const std::string& name) { return parse_obj(test::read_fixture("meshes/" + name), name); }
 
 SceneError parse_error(const std::string& text) {
     try {
@@ -137,14 +122,14 @@ TEST(ObjLoader, DropsUvsWhenSomeCornersLackThem) {
 }
 
 TEST(ObjLoader, RejectsOutOfRangeVertexIndexWithItsLine) {
-    const SceneError e = parse_error(fixture("bad_index.obj"));
+    const SceneError e = parse_error(test::read_fixture("meshes/bad_index.obj"));
     EXPECT_EQ(e.where().file, "test.obj");
     EXPECT_EQ(e.where().line, 11);
     EXPECT_TRUE(contains(e.message(), "face refers to vertex 7, but the file has 6 v statements"));
 }
 
 TEST(ObjLoader, RejectsOutOfRangeNormalAndUvIndices) {
-    const SceneError normal = parse_error(fixture("bad_normal_index.obj"));
+    const SceneError normal = parse_error(test::read_fixture("meshes/bad_normal_index.obj"));
     EXPECT_EQ(normal.where().line, 5);
     EXPECT_TRUE(contains(normal.message(), "normal 2, but the file has 1 vn statements"));
     const SceneError uv = parse_error(kThreeVertices + "vt 0 0\nf 1/1 2/5 3/1\n");

@@ -15,29 +15,14 @@
 #include <vector>
 
 #include "candela/core/error.h"
+#include "support/fixtures.h"
+#include "support/printers.h"
 
 namespace candela {
 
-// Readable failure messages for the vector types.
-[[maybe_unused]] static void PrintTo(const Vec3f& v, std::ostream* os) {
-    *os << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-}
-[[maybe_unused]] static void PrintTo(const Vec2f& v, std::ostream* os) {
-    *os << "(" << v.x << ", " << v.y << ")";
-}
-
 namespace {
 
-std::string fixture(const std::string& name) {
-    const std::filesystem::path path = std::filesystem::path(CANDELA_TEST_DATA_DIR) / "meshes" / name;
-    std::ifstream in(path, std::ios::binary);
-    EXPECT_TRUE(in) << "missing fixture " << path;
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-TriangleMesh parse_fixture(const std::string& name) { return parse_ply(fixture(name), name); }
+TriangleMesh parse_fixture(const std::string& name) { return parse_ply(test::read_fixture("meshes/" + name), name); }
 
 // Header lines joined by newlines, ending with end_header.
 std::string header(const std::string& format, const std::vector<std::string>& lines) {
@@ -246,7 +231,7 @@ TEST(PlyLoader, AcceptsCrLfLineEndings) {
 }
 
 TEST(PlyLoader, RejectsTruncatedBinaryFile) {
-    const SceneError e = parse_error(fixture("truncated_binary.ply"));
+    const SceneError e = parse_error(test::read_fixture("meshes/truncated_binary.ply"));
     EXPECT_EQ(e.where().file, "test.ply");
     EXPECT_TRUE(contains(e.message(), "element \"face\", record 4 of 6"));
     EXPECT_TRUE(contains(e.message(), "unexpected end of file"));
@@ -316,7 +301,7 @@ TEST(PlyLoader, RejectsHugeListCountsAsTruncation) {
 }
 
 TEST(PlyLoader, RejectsOutOfRangeIndexWithItsLine) {
-    const SceneError e = parse_error(fixture("bad_index.ply"));
+    const SceneError e = parse_error(test::read_fixture("meshes/bad_index.ply"));
     EXPECT_EQ(e.where().line, 14);
     EXPECT_TRUE(contains(e.message(), "vertex index 7 is out of range; the file has 3 vertices"));
     EXPECT_TRUE(contains(e.message(), "element \"face\", record 2 of 2"));
