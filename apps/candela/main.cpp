@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "candela/core/atomic_file.h"
 #include "candela/core/error.h"
 #include "candela/image/image_io.h"
 #include "candela/render/progress.h"
@@ -34,6 +35,7 @@ struct RenderArgs {
     std::optional<int> threads;
     std::optional<std::string> resolution;
     std::optional<std::string> integrator;
+    std::optional<std::string> stats;
 };
 
 // A flag value the user got wrong: reported like a scene error, without a file.
@@ -73,6 +75,18 @@ void apply_overrides(const RenderArgs& a, Scene& scene) {
     }
 }
 
+// Render statistics as JSON, for scripts (bench/run.sh) that should not parse the summary line.
+void write_stats(const fs::path& file, const Scene& scene, const RenderStats& s) {
+    std::string json = fmt::format(
+        "{{\"integrator\": \"{}\", \"width\": {}, \"height\": {}, \"spp\": {}, \"threads\": {},\n"
+        " \"render_seconds\": {:.6f}, \"build_seconds\": {:.6f}, \"samples\": {}, \"dropped_samples\": {},\n"
+        " \"rays\": {{\"camera\": {}, \"bounce\": {}, \"shadow\": {}, \"total\": {}}}}}\n",
+        integrator_type_name(scene.integrator.type), scene.camera.width, scene.camera.height, scene.sampler.spp,
+        s.threads, s.render_seconds, s.build_seconds, s.samples, s.dropped_samples, s.rays.camera, s.rays.bounce,
+        s.rays.shadow, s.rays.total());
+    write_contents_atomically(file, json);
+}
+
 int run_render(const RenderArgs& a) {
     std::vector<fs::path> outputs(a.outputs.begin(), a.outputs.end());
     if (outputs.empty()) outputs.push_back(default_output(a.scene));
@@ -90,6 +104,7 @@ int run_render(const RenderArgs& a) {
     options.progress = isatty(fileno(stderr)) != 0;
     RenderResult result = render(scene, options);
     for (const fs::path& out : outputs) write_image(out, result.image, scene.film);
+    if (a.stats) write_stats(*a.stats, scene, result.stats);
 
     const RenderStats& s = result.stats;
     std::string outs;
@@ -119,6 +134,7 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--seed", args.seed, "Random seed (overrides sampler.seed)");
     render_cmd->add_option("--threads", args.threads, "Render threads; 0 = all cores (default)");
     render_cmd->add_option("--resolution", args.resolution, "Image size WIDTHxHEIGHT (overrides camera.resolution)");
+    render_cmd->add_option("--stats", args.stats, "Also write render statistics (times, samples, rays by kind) as JSON");
     render_cmd->add_option("--integrator", args.integrator,
                            std::string("Integrator (overrides integrator.type): ") + names_list(integrator_type_names()));
 

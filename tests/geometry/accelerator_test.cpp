@@ -134,6 +134,25 @@ TEST(Accelerator, SpawnedRaysNeverHitTheirOwnSphere) {
     EXPECT_EQ(count_self_hits(scene, probes, 500000, 11), 0);
 }
 
+TEST(Accelerator, SpawnedRaysLeavePlanesThroughTheOriginWithDenormalsFlushed) {
+    // Render threads flush denormals to zero (Embree asks for it). A floor at y = 0 (the Cornell
+    // box's) has hit points with an exact y, so the offset must not be a denormal step that the
+    // flush would undo.
+    enable_flush_denormals();
+    TriangleMesh floor = make_quad({552.8f, 0, 0}, {-552.8f, 0, 0}, {0, 0, 559.2f});
+    TriangleMesh wall = make_quad({0, 0, 559.2f}, {0, 0, -559.2f}, {0, 548.8f, 0});
+    TestScene scene({floor, wall}, {});
+    Rng rng(17, 4);
+    std::vector<Ray> probes;
+    for (int i = 0; i < 4096; ++i) {
+        Vec2f u = rng.next_vec2f();
+        // From inside the box towards the floor and the wall.
+        Vec3f target = i % 2 ? Vec3f(550.0f * u.x, 0.0f, 559.0f * u.y) : Vec3f(0.0f, 548.0f * u.x, 559.0f * u.y);
+        probes.push_back(Ray{Vec3f(278, 273, 280), normalize(target - Vec3f(278, 273, 280))});
+    }
+    EXPECT_EQ(count_self_hits(scene, probes, 200000, 19), 0);
+}
+
 TEST(Accelerator, SpawnedRaysNeverHitTheirOwnTriangle) {
     // A closed box (12 triangles) at large coordinates, so ulps are big.
     TriangleMesh box;

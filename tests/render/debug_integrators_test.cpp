@@ -20,7 +20,7 @@ TEST(AoIntegrator, MatchesClosedFormBetweenParallelPlanes) {
     // probability 1 - (h/D)^2; so the unoccluded fraction is (h/D)^2.
     const float h = 1.0f, D = 2.0f;
     Scene s;
-    s.materials = {DiffuseMaterial{}};
+    s.materials = {make_diffuse(Rgb(0.5f))};
     test::add_quad(s, {-1e3f, 0, -1e3f}, {0, 0, 2e3f}, {2e3f, 0, 0});  // floor, facing +y
     test::add_quad(s, {-1e3f, h, -1e3f}, {2e3f, 0, 0}, {0, 0, 2e3f});  // ceiling, facing -y
     Accelerator accel(s.meshes, s.spheres, s.shapes);
@@ -43,7 +43,7 @@ TEST(AoIntegrator, MatchesClosedFormBetweenParallelPlanes) {
 
 TEST(AoIntegrator, OpenPlaneIsUnoccludedAndEnclosedPointIsOccluded) {
     Scene s;
-    s.materials = {DiffuseMaterial{}};
+    s.materials = {make_diffuse(Rgb(0.5f))};
     test::add_quad(s, {-10, 0, -10}, {0, 0, 20}, {20, 0, 0});
     Accelerator open(s.meshes, s.spheres, s.shapes);
     AoIntegrator ao_open(open, kInfinity);
@@ -54,7 +54,7 @@ TEST(AoIntegrator, OpenPlaneIsUnoccludedAndEnclosedPointIsOccluded) {
     }
     // Inside a closed sphere every direction is blocked.
     Scene inside;
-    inside.materials = {DiffuseMaterial{}};
+    inside.materials = {make_diffuse(Rgb(0.5f))};
     test::add_sphere(inside, {0, 0, 0}, 5.0);
     Accelerator closed(inside.meshes, inside.spheres, inside.shapes);
     AoIntegrator ao_closed(closed, kInfinity);
@@ -66,7 +66,7 @@ TEST(AoIntegrator, OpenPlaneIsUnoccludedAndEnclosedPointIsOccluded) {
 
 TEST(DebugIntegrators, NormalsDepthAlbedoOfAKnownHit) {
     Scene s;
-    s.materials = {DiffuseMaterial{Rgb(0.1f, 0.2f, 0.3f)}, MirrorMaterial{Rgb(0.9f)}};
+    s.materials = {make_diffuse(Rgb(0.1f, 0.2f, 0.3f)), make_mirror(Rgb(0.9f))};
     test::add_quad(s, {-10, 0, -10}, {0, 0, 20}, {20, 0, 0}, 0);  // floor facing +y
     Accelerator accel(s.meshes, s.spheres, s.shapes);
     RayCounters c;

@@ -2,6 +2,7 @@
 // whatever the thread count or tile size.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -19,13 +20,26 @@ bool bit_identical(const Image& a, const Image& b) {
 
 class Determinism : public ::testing::TestWithParam<std::pair<IntegratorType, FilterType>> {};
 
+std::string param_name(const ::testing::TestParamInfo<std::pair<IntegratorType, FilterType>>& info) {
+    return std::string(integrator_type_name(info.param.first)) + "_" + std::string(filter_type_name(info.param.second));
+}
+
 TEST_P(Determinism, SameImageForAnyThreadCountAndTileSize) {
-    Scene scene = test::small_box_scene(37, 23, 8);  // sizes that do not divide into tiles
-    scene.integrator.type = GetParam().first;
+    // Sizes that do not divide into tiles. The light transport integrators get a light, a mirror
+    // and indirect light, so that every branch of their loops runs.
+    const IntegratorType type = GetParam().first;
+    const bool transport = type == IntegratorType::kPath || type == IntegratorType::kBsdf ||
+                           type == IntegratorType::kWhitted;
+    Scene scene = transport ? test::lit_small_box_scene(37, 23, 8) : test::small_box_scene(37, 23, 8);
+    scene.integrator.type = type;
     scene.film.filter = GetParam().second;
     Image one = render(scene, {.threads = 1, .tile_size = 16}).image;
     Image two = render(scene, {.threads = 2, .tile_size = 16}).image;
     Image small_tiles = render(scene, {.threads = 2, .tile_size = 5}).image;
+    // A black image would be trivially identical: the scene must show something.
+    float brightest = 0.0f;
+    for (const Rgb& p : one.pixels) brightest = std::max(brightest, p.max_component());
+    EXPECT_GT(brightest, 0.0f);
     EXPECT_TRUE(bit_identical(one, two));
     EXPECT_TRUE(bit_identical(one, small_tiles));
     // And the seed matters: a different seed gives a different image (for random integrators).
@@ -39,10 +53,14 @@ INSTANTIATE_TEST_SUITE_P(AllDebugIntegrators, Determinism,
                                            std::pair{IntegratorType::kNormals, FilterType::kTent},
                                            std::pair{IntegratorType::kDepth, FilterType::kGaussian},
                                            std::pair{IntegratorType::kAlbedo, FilterType::kSmallpt}),
-                         [](const auto& param_info) {
-                             return std::string(integrator_type_name(param_info.param.first)) + "_" +
-                                    std::string(filter_type_name(param_info.param.second));
-                         });
+                         param_name);
+
+INSTANTIATE_TEST_SUITE_P(AllTransportIntegrators, Determinism,
+                         ::testing::Values(std::pair{IntegratorType::kPath, FilterType::kBox},
+                                           std::pair{IntegratorType::kBsdf, FilterType::kTent},
+                                           std::pair{IntegratorType::kWhitted, FilterType::kSmallpt},
+                                           std::pair{IntegratorType::kPath, FilterType::kGaussian}),
+                         param_name);
 
 }  // namespace
 }  // namespace candela

@@ -8,12 +8,15 @@ namespace candela {
 namespace {
 
 TEST(EnumNames, IntegratorNamesRoundTrip) {
-    ASSERT_EQ(integrator_type_names().size(), 4u);
+    ASSERT_EQ(integrator_type_names().size(), 7u);
     for (std::string_view name : integrator_type_names()) {
         std::optional<IntegratorType> type = parse_integrator_type(name);
         ASSERT_TRUE(type) << name;
         EXPECT_EQ(integrator_type_name(*type), name);
     }
+    EXPECT_EQ(parse_integrator_type("path"), IntegratorType::kPath);
+    EXPECT_EQ(parse_integrator_type("bsdf"), IntegratorType::kBsdf);
+    EXPECT_EQ(parse_integrator_type("whitted"), IntegratorType::kWhitted);
     EXPECT_EQ(parse_integrator_type("ao"), IntegratorType::kAo);
     EXPECT_EQ(parse_integrator_type("normals"), IntegratorType::kNormals);
     EXPECT_EQ(integrator_type_name(IntegratorType::kDepth), "depth");
@@ -27,6 +30,8 @@ TEST(EnumNames, FilmNamesRoundTrip) {
         EXPECT_EQ(tonemap_name(parse_tonemap(name).value()), name);
     for (std::string_view name : transfer_names())
         EXPECT_EQ(transfer_name(parse_transfer(name).value()), name);
+    for (std::string_view name : light_selection_names())
+        EXPECT_EQ(light_selection_name(parse_light_selection(name).value()), name);
     EXPECT_EQ(parse_filter_type("smallpt"), FilterType::kSmallpt);
     EXPECT_EQ(parse_filter_type("gaussian"), FilterType::kGaussian);
     EXPECT_EQ(parse_tonemap("aces"), Tonemap::kAces);
@@ -35,7 +40,7 @@ TEST(EnumNames, FilmNamesRoundTrip) {
 }
 
 TEST(EnumNames, UnknownNamesParseToNothing) {
-    EXPECT_FALSE(parse_integrator_type("path"));
+    EXPECT_FALSE(parse_integrator_type("volpath"));
     EXPECT_FALSE(parse_integrator_type("AO"));  // names are case-sensitive
     EXPECT_FALSE(parse_filter_type(""));
     EXPECT_FALSE(parse_tonemap("filmic"));
@@ -43,7 +48,8 @@ TEST(EnumNames, UnknownNamesParseToNothing) {
 }
 
 TEST(EnumNames, NamesListIsSortedAndCommaSeparated) {
-    EXPECT_EQ(names_list(integrator_type_names()), "albedo, ao, depth, normals");
+    EXPECT_EQ(names_list(integrator_type_names()), "albedo, ao, bsdf, depth, normals, path, whitted");
+    EXPECT_EQ(names_list(light_selection_names()), "power, uniform");
     EXPECT_EQ(names_list(filter_type_names()), "box, gaussian, smallpt, tent");
     EXPECT_EQ(names_list(tonemap_names()), "aces, clamp, exposure, reinhard");
     EXPECT_EQ(names_list(transfer_names()), "gamma, srgb");

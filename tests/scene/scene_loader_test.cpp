@@ -18,9 +18,12 @@ using test::load_json;
 
 TEST(SceneLoader, EmptySceneHasTheDocumentedDefaults) {
     Scene s = load_json("{}");
-    EXPECT_EQ(s.integrator.type, IntegratorType::kAo);
+    EXPECT_EQ(s.integrator.type, IntegratorType::kPath);
     EXPECT_EQ(s.integrator.max_depth, 64);
     EXPECT_EQ(s.integrator.rr_depth, 3);
+    EXPECT_EQ(s.integrator.rr_probability, 0.0f);
+    EXPECT_TRUE(s.integrator.mis);
+    EXPECT_EQ(s.integrator.light_selection, LightSelection::kPower);
     EXPECT_TRUE(std::isinf(s.integrator.max_distance));
     EXPECT_EQ(s.sampler.spp, 16);
     EXPECT_EQ(s.sampler.seed, 0u);
@@ -76,6 +79,25 @@ TEST(SceneLoaderIntegrator, MaxDistanceIsRead) {
     EXPECT_EQ(load_json(R"({"integrator": {"max_distance": 2.5}})").integrator.max_distance, 2.5f);
     EXPECT_EQ(load_error(R"({"integrator": {"max_distance": 0}})").message(),
               "expected a number > 0, got 0");
+}
+
+TEST(SceneLoaderIntegrator, MisIsRead) {
+    EXPECT_FALSE(load_json(R"({"integrator": {"mis": false}})").integrator.mis);
+    EXPECT_EQ(load_error(R"({"integrator": {"mis": 0}})").where().json_pointer, "/integrator/mis");
+}
+
+TEST(SceneLoaderIntegrator, RrIsAFixedSurvivalProbability) {
+    EXPECT_EQ(load_json(R"({"integrator": {"rr": 0.8}})").integrator.rr_probability, 0.8f);
+    EXPECT_EQ(load_json(R"({"integrator": {"rr": 1}})").integrator.rr_probability, 1.0f);
+    EXPECT_EQ(load_error(R"({"integrator": {"rr": 0}})").message(), "expected a number in (0, 1], got 0");
+    EXPECT_EQ(load_error(R"({"integrator": {"rr": 1.5}})").where().json_pointer, "/integrator/rr");
+}
+
+TEST(SceneLoaderIntegrator, LightSelectionIsRead) {
+    EXPECT_EQ(load_json(R"({"integrator": {"light_selection": "uniform"}})").integrator.light_selection,
+              LightSelection::kUniform);
+    EXPECT_EQ(load_error(R"({"integrator": {"light_selection": "random"}})").message(),
+              "unknown light selection \"random\"; expected one of: power, uniform");
 }
 
 // ---- sampler

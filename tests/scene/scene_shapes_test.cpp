@@ -50,43 +50,114 @@ bool has_position(const TriangleMesh& mesh, const Vec3f& p) {
 
 // ---- materials
 
+// The one lobe of material `index`, as a T (the test fails if it is another lobe).
+template <class T>
+T only_lobe(const Scene& s, size_t index) {
+    const Bsdf& bsdf = s.materials.at(index).bsdf;
+    EXPECT_EQ(bsdf.lobe_count, 1u);
+    const T* lobe = std::get_if<T>(&bsdf.lobes[0]);
+    EXPECT_NE(lobe, nullptr);
+    return lobe != nullptr ? *lobe : T{};
+}
+
 TEST(SceneLoaderMaterials, DiffuseAlbedoIsRead) {
     Scene grey = load_json(R"({"materials": {"a": {"type": "diffuse", "albedo": 0.25}}})");
-    EXPECT_EQ(std::get<DiffuseMaterial>(grey.materials[0]).albedo, Rgb(0.25f));
+    EXPECT_EQ(only_lobe<LambertianLobe>(grey, 0).reflectance, Rgb(0.25f));
     Scene rgb = load_json(R"({"materials": {"a": {"type": "diffuse", "albedo": [0.1, 0.2, 0.3]}}})");
-    EXPECT_EQ(std::get<DiffuseMaterial>(rgb.materials[0]).albedo, Rgb(0.1f, 0.2f, 0.3f));
+    EXPECT_EQ(only_lobe<LambertianLobe>(rgb, 0).reflectance, Rgb(0.1f, 0.2f, 0.3f));
     Scene plain = load_json(R"({"materials": {"a": {"type": "diffuse"}}})");
-    EXPECT_EQ(std::get<DiffuseMaterial>(plain.materials[0]).albedo, Rgb(0.5f));
+    EXPECT_EQ(only_lobe<LambertianLobe>(plain, 0).reflectance, Rgb(0.5f));
 }
 
 TEST(SceneLoaderMaterials, MirrorAlbedoIsRead) {
     Scene s = load_json(R"({"materials": {"a": {"type": "mirror", "albedo": 0.8},
                                           "b": {"type": "mirror"}}})");
-    EXPECT_EQ(std::get<MirrorMaterial>(s.materials[0]).albedo, Rgb(0.8f));
-    EXPECT_EQ(std::get<MirrorMaterial>(s.materials[1]).albedo, Rgb(1.0f));
+    EXPECT_EQ(only_lobe<SpecularReflectionLobe>(s, 0).reflectance, Rgb(0.8f));
+    EXPECT_EQ(only_lobe<SpecularReflectionLobe>(s, 1).reflectance, Rgb(1.0f));
 }
 
 TEST(SceneLoaderMaterials, DielectricIorAndTintAreRead) {
     Scene s = load_json(R"({"materials": {"a": {"type": "dielectric", "ior": 2.4,
                                                 "tint": [1, 0.5, 0.25]},
-                                          "b": {"type": "dielectric"}}})");
-    const auto& a = std::get<DielectricMaterial>(s.materials[0]);
-    EXPECT_EQ(a.ior, 2.4f);
+                                          "b": {"type": "dielectric"},
+                                          "c": {"type": "dielectric", "ior": 1}}})");
+    auto a = only_lobe<FresnelSpecularLobe>(s, 0);
+    EXPECT_EQ(a.eta, 2.4f);
     EXPECT_EQ(a.tint, Rgb(1.0f, 0.5f, 0.25f));
-    const auto& b = std::get<DielectricMaterial>(s.materials[1]);
-    EXPECT_EQ(b.ior, 1.5f);
+    auto b = only_lobe<FresnelSpecularLobe>(s, 1);
+    EXPECT_EQ(b.eta, 1.5f);
     EXPECT_EQ(b.tint, Rgb(1.0f));
+    // An index of 1 (an interface that does not bend light) is allowed.
+    EXPECT_EQ(only_lobe<FresnelSpecularLobe>(s, 2).eta, 1.0f);
     EXPECT_EQ(load_error(R"({"materials": {"a": {"type": "dielectric", "ior": 0}}})").message(),
               "expected a number > 0, got 0");
+}
+
+TEST(SceneLoaderMaterials, DielectricFresnelSelectsSchlick) {
+    Scene s = load_json(R"({"materials": {"a": {"type": "dielectric", "fresnel": "schlick"},
+                                          "b": {"type": "dielectric", "fresnel": "exact"},
+                                          "c": {"type": "dielectric"}}})");
+    EXPECT_TRUE(only_lobe<FresnelSpecularLobe>(s, 0).schlick);
+    EXPECT_FALSE(only_lobe<FresnelSpecularLobe>(s, 1).schlick);
+    EXPECT_FALSE(only_lobe<FresnelSpecularLobe>(s, 2).schlick);
+    EXPECT_EQ(
+        load_error(R"({"materials": {"a": {"type": "dielectric", "fresnel": true}}})").message(),
+        "expected a fresnel (one of: exact, schlick), got true");
+}
+
+TEST(SceneLoaderMaterials, TransmissionIorAndTintAreRead) {
+    Scene s = load_json(R"({"materials": {"a": {"type": "transmission", "ior": 1.33, "tint": 0.5},
+                                          "b": {"type": "transmission"}}})");
+    auto a = only_lobe<SpecularTransmissionLobe>(s, 0);
+    EXPECT_EQ(a.eta, 1.33f);
+    EXPECT_EQ(a.tint, Rgb(0.5f));
+    auto b = only_lobe<SpecularTransmissionLobe>(s, 1);
+    EXPECT_EQ(b.eta, 1.5f);
+    EXPECT_EQ(b.tint, Rgb(1.0f));
+    EXPECT_EQ(load_error(R"({"materials": {"a": {"type": "transmission", "fresnel": "exact"}}})")
+                  .message(),
+              "unknown key \"fresnel\"; expected one of: ior, tint, type");
+}
+
+TEST(SceneLoaderMaterials, MixConcatenatesTheLobesInOrder) {
+    Scene s = load_json(R"({"materials": {"m": {"type": "mix", "lobes": [
+        {"type": "diffuse", "albedo": 0.5}, {"type": "mirror", "albedo": 0.25},
+        {"type": "dielectric", "ior": 1.33, "fresnel": "schlick"},
+        {"type": "transmission", "ior": 2}]}}})");
+    const Bsdf& bsdf = s.materials[0].bsdf;
+    ASSERT_EQ(bsdf.lobe_count, 4u);
+    EXPECT_EQ(std::get<LambertianLobe>(bsdf.lobes[0]).reflectance, Rgb(0.5f));
+    EXPECT_EQ(std::get<SpecularReflectionLobe>(bsdf.lobes[1]).reflectance, Rgb(0.25f));
+    EXPECT_EQ(std::get<FresnelSpecularLobe>(bsdf.lobes[2]).eta, 1.33f);
+    EXPECT_TRUE(std::get<FresnelSpecularLobe>(bsdf.lobes[2]).schlick);
+    EXPECT_EQ(std::get<SpecularTransmissionLobe>(bsdf.lobes[3]).eta, 2.0f);
+    // One part is a mix too.
+    Scene one =
+        load_json(R"({"materials": {"m": {"type": "mix", "lobes": [{"type": "mirror"}]}}})");
+    EXPECT_EQ(only_lobe<SpecularReflectionLobe>(one, 0).reflectance, Rgb(1.0f));
+}
+
+TEST(SceneLoaderMaterials, MixPartsAreCheckedLikeMaterials) {
+    SceneError e = load_error(R"({"materials": {"m": {"type": "mix", "lobes": [
+        {"type": "diffuse"}, {"type": "mirror", "ior": 1.5}]}}})");
+    EXPECT_EQ(e.where().json_pointer, "/materials/m/lobes/1");
+    EXPECT_EQ(e.message(), "unknown key \"ior\"; expected one of: albedo, type");
+    SceneError missing = load_error(R"({"materials": {"m": {"type": "mix"}}})");
+    EXPECT_EQ(missing.message(), "missing required key \"lobes\"");
+    SceneError not_array = load_error(R"({"materials": {"m": {"type": "mix", "lobes": {}}}})");
+    EXPECT_EQ(not_array.message(), "expected an array, got an empty object");
+    SceneError extra = load_error(
+        R"({"materials": {"m": {"type": "mix", "lobes": [{"type": "mirror"}], "albedo": 1}}})");
+    EXPECT_EQ(extra.message(), "unknown key \"albedo\"; expected one of: lobes, type");
 }
 
 TEST(SceneLoaderMaterials, NamesKeepFileOrderAndParallelTheMaterials) {
     Scene s = load_json(R"({"materials": {"zinc": {"type": "mirror"}, "ash": {"type": "diffuse"},
                                           "glass": {"type": "dielectric"}}})");
     ASSERT_EQ(s.material_names, (std::vector<std::string>{"zinc", "ash", "glass"}));
-    EXPECT_TRUE(std::holds_alternative<MirrorMaterial>(s.materials[0]));
-    EXPECT_TRUE(std::holds_alternative<DiffuseMaterial>(s.materials[1]));
-    EXPECT_TRUE(std::holds_alternative<DielectricMaterial>(s.materials[2]));
+    EXPECT_TRUE(std::holds_alternative<SpecularReflectionLobe>(s.materials[0].bsdf.lobes[0]));
+    EXPECT_TRUE(std::holds_alternative<LambertianLobe>(s.materials[1].bsdf.lobes[0]));
+    EXPECT_TRUE(std::holds_alternative<FresnelSpecularLobe>(s.materials[2].bsdf.lobes[0]));
 }
 
 TEST(SceneLoaderMaterials, KeysOfOtherTypesAreUnknown) {

@@ -151,7 +151,10 @@ struct Accelerator::Impl {
         // the triangle's plane up to the rounding of that sum: gamma(7) (|b0 p0| + |b1 p1| +
         // |b2 p2|) bounds it (pbrt-v4, 6.8.5; barycentric error moves p within the plane only).
         h.p = p0 * b0 + p1 * b1 + p2 * b2;
-        h.p_error = (abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * rounding_gamma(7);
+        // Isotropic: Embree's intersection test mixes all coordinates, so a plane at y = 0 with
+        // vertices far out in x and z still needs an offset along y of that magnitude (and a
+        // zero bound would leave only a denormal step, which FTZ/DAZ flushes away).
+        h.p_error = Vec3f(max_component(abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * rounding_gamma(7));
         h.ng = normalize(cross(p1 - p0, p2 - p0));
         h.ns = h.ng;
         if (!mesh.normals.empty()) {
@@ -177,7 +180,7 @@ struct Accelerator::Impl {
         h.p = Vec3f(p);
         // The double projection is exact to far below float precision; rounding it to float
         // dominates. gamma(5) |p| as pbrt-v4 uses for reprojected sphere points (6.8.5).
-        h.p_error = abs(h.p) * rounding_gamma(5);
+        h.p_error = Vec3f(max_component(abs(h.p)) * rounding_gamma(5));
         h.ng = normalize(Vec3f(s.reverse_orientation ? -n : n));
         h.ns = h.ng;
         // The environment's convention: +Y up, u = atan2(x, -z) / 2pi, v = acos(y) / pi.

@@ -10,7 +10,8 @@ namespace candela {
 struct SurfaceHit {
     float t = 0;       // ray parameter of the hit
     Vec3f p;           // the point, computed on the surface (not o + t d) so it is accurate
-    Vec3f p_error;     // per-axis bound on |p - true point| (ray_offset.h uses it)
+    Vec3f p_error;     // per-axis bound on |p - true point| (ray_offset.h uses it); never 0
+                       // for a non-degenerate shape
     Vec3f ng;          // unit geometric normal on the shape's front side
     Vec3f ns;          // unit shading normal (interpolated vertex normal, or ng), same side as ng
     Vec2f uv;          // surface parameterisation

@@ -12,6 +12,7 @@
 namespace candela {
 
 class Accelerator;
+class LightSet;
 struct Scene;
 
 class Integrator {
@@ -22,7 +23,7 @@ class Integrator {
     virtual Rgb radiance(const Ray& camera_ray, Rng& rng, RayCounters& counters) const = 0;
 };
 
-// The integrator the scene asks for. Both arguments must outlive it.
-std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Accelerator& accel);
+// The integrator the scene asks for. The arguments must outlive it.
+std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Accelerator& accel, const LightSet& lights);
 
 }  // namespace candela

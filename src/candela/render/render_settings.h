@@ -2,17 +2,25 @@
 // The integrator and sampler sections of the scene file.
 #include <cstdint>
 
+#include "candela/lights/light_selection.h"
 #include "candela/math/constants.h"
 
 namespace candela {
 
-enum class IntegratorType { kNormals, kDepth, kAlbedo, kAo };
+// path: next-event estimation + BSDF sampling with MIS (the default). bsdf: BSDF sampling only
+// (smallpt's estimator). whitted: direct light + perfect specular recursion. The rest are debug
+// views of the first hit.
+enum class IntegratorType { kPath, kBsdf, kWhitted, kNormals, kDepth, kAlbedo, kAo };
 
 struct IntegratorSettings {
-    IntegratorType type = IntegratorType::kAo;
-    int max_depth = 64;
-    int rr_depth = 3;
-    float max_distance = kInfinity;  // `ao`: occluders farther than this do not count
+    IntegratorType type = IntegratorType::kPath;
+    int max_depth = 64;               // longest path, in bounces (path, bsdf, whitted)
+    int rr_depth = 3;                 // bounces before Russian roulette may end a path
+    float rr_probability = 0.0f;      // fixed survival probability (GAMES101: 0.8); 0: by throughput
+    bool mis = true;                  // path: weight light and BSDF sampling by the power heuristic;
+                                      // false: NEE only (emission found by BSDF rays ignored)
+    LightSelection light_selection = LightSelection::kPower;
+    float max_distance = kInfinity;   // `ao`: occluders farther than this do not count
 };
 
 struct SamplerSettings {

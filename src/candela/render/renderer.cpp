@@ -13,6 +13,7 @@
 #include "candela/film/film.h"
 #include "candela/film/filter.h"
 #include "candela/geometry/accelerator.h"
+#include "candela/lights/light_set.h"
 #include "candela/render/integrator.h"
 #include "candela/render/progress.h"
 #include "candela/sampling/rng.h"
@@ -50,10 +51,12 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     RenderResult result;
     Clock::time_point build_start = Clock::now();
     Accelerator accel(scene.meshes, scene.spheres, scene.shapes);
+
+    LightSet lights(scene.meshes, scene.spheres, scene.shapes, scene.integrator.light_selection);
     result.stats.build_seconds = seconds_since(build_start);
 
     PerspectiveCamera camera(scene.camera);
-    std::unique_ptr<Integrator> integrator = make_integrator(scene, accel);
+    std::unique_ptr<Integrator> integrator = make_integrator(scene, accel, lights);
     const int width = camera.width(), height = camera.height();
     const auto spp = uint32_t(scene.sampler.spp);
     const uint64_t seed = scene.sampler.seed;

@@ -17,7 +17,7 @@ struct RenderOptions {
 };
 
 struct RenderStats {
-    double build_seconds = 0;   // accelerator build
+    double build_seconds = 0;   // accelerator and light tables
     double render_seconds = 0;  // sampling only
     uint64_t samples = 0;       // camera samples taken
     uint64_t dropped_samples = 0;  // NaN or Inf samples, counted as zero and never written

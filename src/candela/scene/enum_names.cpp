@@ -10,8 +10,9 @@ namespace {
 
 // Each table lists the names in the enum's declaration order, so a value's name is
 // table[underlying value]. Adding an enumerator means adding its name here.
-constexpr std::array<std::string_view, 4> kIntegratorTypeNames = {"normals", "depth", "albedo",
-                                                                  "ao"};
+constexpr std::array<std::string_view, 7> kIntegratorTypeNames = {"path",    "bsdf",  "whitted", "normals",
+                                                                  "depth",   "albedo", "ao"};
+constexpr std::array<std::string_view, 2> kLightSelectionNames = {"power", "uniform"};
 constexpr std::array<std::string_view, 4> kFilterTypeNames = {"box", "tent", "gaussian", "smallpt"};
 constexpr std::array<std::string_view, 4> kTonemapNames = {"clamp", "exposure", "reinhard", "aces"};
 constexpr std::array<std::string_view, 2> kTransferNames = {"srgb", "gamma"};
@@ -35,6 +36,7 @@ std::string_view integrator_type_name(IntegratorType type) {
     return name_of(kIntegratorTypeNames, type);
 }
 std::string_view filter_type_name(FilterType type) { return name_of(kFilterTypeNames, type); }
+std::string_view light_selection_name(LightSelection s) { return name_of(kLightSelectionNames, s); }
 std::string_view tonemap_name(Tonemap tonemap) { return name_of(kTonemapNames, tonemap); }
 std::string_view transfer_name(Transfer transfer) { return name_of(kTransferNames, transfer); }
 
@@ -43,6 +45,9 @@ std::optional<IntegratorType> parse_integrator_type(std::string_view name) {
 }
 std::optional<FilterType> parse_filter_type(std::string_view name) {
     return value_of<FilterType>(kFilterTypeNames, name);
+}
+std::optional<LightSelection> parse_light_selection(std::string_view name) {
+    return value_of<LightSelection>(kLightSelectionNames, name);
 }
 std::optional<Tonemap> parse_tonemap(std::string_view name) {
     return value_of<Tonemap>(kTonemapNames, name);
@@ -53,6 +58,7 @@ std::optional<Transfer> parse_transfer(std::string_view name) {
 
 std::span<const std::string_view> integrator_type_names() { return kIntegratorTypeNames; }
 std::span<const std::string_view> filter_type_names() { return kFilterTypeNames; }
+std::span<const std::string_view> light_selection_names() { return kLightSelectionNames; }
 std::span<const std::string_view> tonemap_names() { return kTonemapNames; }
 std::span<const std::string_view> transfer_names() { return kTransferNames; }
 

@@ -16,18 +16,21 @@ namespace candela {
 // The scene-file name of each value ("ao", "gaussian", "aces", "srgb" ...).
 std::string_view integrator_type_name(IntegratorType type);
 std::string_view filter_type_name(FilterType type);
+std::string_view light_selection_name(LightSelection selection);
 std::string_view tonemap_name(Tonemap tonemap);
 std::string_view transfer_name(Transfer transfer);
 
 // The value a scene-file name stands for; nullopt for an unknown name (names are case-sensitive).
 std::optional<IntegratorType> parse_integrator_type(std::string_view name);
 std::optional<FilterType> parse_filter_type(std::string_view name);
+std::optional<LightSelection> parse_light_selection(std::string_view name);
 std::optional<Tonemap> parse_tonemap(std::string_view name);
 std::optional<Transfer> parse_transfer(std::string_view name);
 
 // Every valid name of a kind, in the enum's order.
 std::span<const std::string_view> integrator_type_names();
 std::span<const std::string_view> filter_type_names();
+std::span<const std::string_view> light_selection_names();
 std::span<const std::string_view> tonemap_names();
 std::span<const std::string_view> transfer_names();
 

@@ -177,6 +177,7 @@ JsonCursor::JsonCursor(const JsonDocument& document, const Json& value, std::str
 bool JsonCursor::is_object() const { return value_->is_object(); }
 bool JsonCursor::is_array() const { return value_->is_array(); }
 bool JsonCursor::is_number() const { return value_->is_number(); }
+bool JsonCursor::is_string() const { return value_->is_string(); }
 
 std::string JsonCursor::describe() const {
     constexpr size_t kMaxShown = 40;

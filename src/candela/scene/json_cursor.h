@@ -88,6 +88,7 @@ class JsonCursor {
     bool is_object() const;
     bool is_array() const;
     bool is_number() const;
+    bool is_string() const;
     // "3", "\"abc\"", "an array of 2 elements", "an object": what a message says it got.
     std::string describe() const;
 

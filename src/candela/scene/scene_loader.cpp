@@ -34,6 +34,11 @@ void read_integrator(JsonCursor c, IntegratorSettings& integrator) {
     if (auto v = c.get("max_depth")) integrator.max_depth = v->integer(Bounds::at_least(1));
     if (auto v = c.get("rr_depth")) integrator.rr_depth = v->integer(Bounds::at_least(0));
     if (auto v = c.get("max_distance")) integrator.max_distance = v->number_f(Bounds::above(0));
+    if (auto v = c.get("mis")) integrator.mis = v->boolean();
+    if (auto v = c.get("rr")) integrator.rr_probability = v->number_f(Bounds{0.0, 1.0, true, false});
+    if (auto v = c.get("light_selection"))
+        integrator.light_selection =
+            *parse_light_selection(v->choice("light selection", light_selection_names()));
     c.reject_unknown_keys();
 }
 

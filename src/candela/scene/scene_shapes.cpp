@@ -2,6 +2,8 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <string_view>
+#include <vector>
 
 #include "candela/scene/enum_names.h"
 #include "candela/scene/mesh_loader.h"
@@ -11,7 +13,12 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 3> kMaterialTypes = {"diffuse", "mirror", "dielectric"};
+constexpr std::array<std::string_view, 5> kMaterialTypes = {"diffuse", "mirror", "dielectric",
+                                                          "transmission", "mix"};
+// The types a `mix` may combine: every material type but `mix` itself.
+constexpr std::array<std::string_view, 4> kLobeMaterialTypes = {"diffuse", "mirror", "dielectric",
+                                                              "transmission"};
+constexpr std::array<std::string_view, 2> kFresnelNames = {"exact", "schlick"};
 constexpr std::array<std::string_view, 3> kShapeTypes = {"mesh", "sphere", "quad"};
 // Reflectances above 1 would create energy; negative ones are meaningless.
 constexpr Bounds kReflectance = Bounds::closed(0, 1);
@@ -20,23 +27,51 @@ constexpr double kParallelSine = 1e-6;
 
 std::string format_vec(const Vec3f& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
 
+// A material of one of kLobeMaterialTypes, whose `type` (already read) is `type`.
+Material read_single_material(JsonCursor& c, std::string_view type) {
+    if (type == "diffuse") {
+        Rgb albedo(0.5f);
+        if (auto v = c.get("albedo")) albedo = v->colour(kReflectance);
+        return make_diffuse(albedo);
+    }
+    if (type == "mirror") {
+        Rgb albedo(1.0f);
+        if (auto v = c.get("albedo")) albedo = v->colour(kReflectance);
+        return make_mirror(albedo);
+    }
+    float ior = 1.5f;
+    Rgb tint(1.0f);
+    if (auto v = c.get("ior")) ior = v->number_f(Bounds::above(0));
+    if (auto v = c.get("tint")) tint = v->colour(kReflectance);
+    if (type == "transmission") return make_transmission(ior, tint);
+    bool schlick = false;
+    if (auto v = c.get("fresnel")) schlick = v->choice("fresnel", kFresnelNames) == "schlick";
+    return make_dielectric(ior, tint, schlick);
+}
+
+// `mix`: 1 to Bsdf::kMaxLobes materials of the other types, their lobes in one material. Mixes do
+// not nest, so each part is one lobe and the count bounds the lobes.
+Material read_mix(JsonCursor& c) {
+    JsonCursor lobes = c.require("lobes");
+    std::vector<JsonCursor> parts = lobes.elements();
+    if (parts.empty() || parts.size() > Bsdf::kMaxLobes)
+        lobes.fail_expected(fmt::format("an array of 1 to {} materials", Bsdf::kMaxLobes));
+    std::vector<Material> materials;
+    for (JsonCursor& part : parts) {
+        JsonCursor type_cursor = part.require("type");
+        if (type_cursor.is_string() && type_cursor.string() == "mix")
+            type_cursor.fail(fmt::format("a mix cannot contain a mix; expected one of: {}",
+                                         names_list(kLobeMaterialTypes)));
+        std::string_view type = type_cursor.choice("material type", kLobeMaterialTypes);
+        materials.push_back(read_single_material(part, type));
+        part.reject_unknown_keys();
+    }
+    return make_mix(materials);
+}
+
 Material read_material(JsonCursor c) {
     std::string_view type = c.require("type").choice("material type", kMaterialTypes);
-    Material material;
-    if (type == "diffuse") {
-        DiffuseMaterial d;
-        if (auto v = c.get("albedo")) d.albedo = v->colour(kReflectance);
-        material = d;
-    } else if (type == "mirror") {
-        MirrorMaterial m;
-        if (auto v = c.get("albedo")) m.albedo = v->colour(kReflectance);
-        material = m;
-    } else {
-        DielectricMaterial d;
-        if (auto v = c.get("ior")) d.ior = v->number_f(Bounds::above(0));
-        if (auto v = c.get("tint")) d.tint = v->colour(kReflectance);
-        material = d;
-    }
+    Material material = type == "mix" ? read_mix(c) : read_single_material(c, type);
     c.reject_unknown_keys();
     return material;
 }

@@ -1,0 +1,37 @@
+#pragma once
+// A diffuse area light: an emitter's geometry with the radiance it emits. Radiance `emission`
+// leaves the front side (the side the normal points to), and the back too when two_sided.
+#include <cstdint>
+
+#include "candela/core/platform.h"
+#include "candela/core/variant.h"
+#include "candela/lights/mesh_emitter.h"
+#include "candela/lights/sphere_emitter.h"
+#include "candela/math/constants.h"
+#include "candela/math/rgb.h"
+
+namespace candela {
+
+using Emitter = Variant<MeshEmitter, SphereEmitter>;
+
+struct AreaLight {
+    Emitter emitter;
+    Rgb emission;
+    bool two_sided = false;
+    uint32_t shape_id = 0;  // in the scene's shapes
+};
+
+// Radiance leaving a point with front normal n in direction w (away from the surface; need not
+// be unit): emission on the front side, or on both when two-sided, else black.
+CANDELA_HD inline Rgb area_light_radiance(const AreaLight& light, const Vec3f& n, const Vec3f& w) {
+    return light.two_sided || dot(n, w) > 0.0f ? light.emission : Rgb();
+}
+
+// Total emitted power as luminance: a Lambertian emitter sends pi L per unit area from each
+// emitting side.
+CANDELA_HD inline float area_light_power(const AreaLight& light) {
+    float area = visit([](const auto& e) { return e.area(); }, light.emitter);
+    return kPi * area * light.emission.luminance() * (light.two_sided ? 2.0f : 1.0f);
+}
+
+}  // namespace candela

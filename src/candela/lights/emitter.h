@@ -1,0 +1,47 @@
+#pragma once
+// What every kind of area emitter provides (meshes and spheres; lights/area_light.h holds the
+// closed set), checked at each emitter's definition (STYLE.md). An emitter knows only its geometry:
+// radiance, sidedness and light selection live in AreaLight and LightSet.
+#include <cmath>
+#include <concepts>
+#include <optional>
+
+#include "candela/core/platform.h"
+#include "candela/math/constants.h"
+#include "candela/math/vec.h"
+
+namespace candela {
+
+// A point sampled on one emitter, seen from a reference point.
+struct EmitterSample {
+    Vec3f p;           // on the surface (world)
+    Vec3f n;           // unit geometric normal of the front side at p
+    float pdf = 0.0f;  // per unit solid angle at the reference point, given this emitter
+};
+
+template <class T>
+concept EmitterType = requires(const T& e, Vec3f ref, float uc, Vec2f u, Vec3f p, Vec3f n) {
+    // A point seen from ref, from uc (a discrete choice, e.g. the triangle) and u; nullopt when
+    // its pdf would be 0 or infinite (ref in the plane of the chosen triangle).
+    { e.sample(ref, uc, u) } -> std::same_as<std::optional<EmitterSample>>;
+    // The density per solid angle at ref with which sample() produces point p with normal n;
+    // bit-identical to the pdf sample() returned for that point (MIS relies on it).
+    { e.pdf(ref, p, n) } -> std::same_as<float>;
+    // Surface area, for the power of the light.
+    { e.area() } -> std::same_as<float>;
+};
+
+// An area density at point p (unit normal n) converted to a density per solid angle at ref:
+// pdf_area * dist^2 / |cos theta_light|. 0 when ref lies on p, infinite when ref is in the
+// tangent plane. In double: with scene coordinates around 1e5 (smallpt) a float ref - p would
+// keep only a few bits.
+CANDELA_HD inline float solid_angle_pdf(double pdf_area, const Vec3f& ref, const Vec3f& p, const Vec3f& n) {
+    Vec3d d = Vec3d(ref) - Vec3d(p);  // exact: a difference of floats fits a double
+    double dist2 = dot(d, d);
+    if (dist2 == 0.0) return 0.0f;
+    double abs_cos_times_dist = std::abs(dot(Vec3d(n), d));  // |cos theta_light| * dist
+    if (abs_cos_times_dist == 0.0) return kInfinity;
+    return static_cast<float>(pdf_area * dist2 * std::sqrt(dist2) / abs_cos_times_dist);
+}
+
+}  // namespace candela

@@ -1,0 +1,69 @@
+#pragma once
+// The scene's area lights: every shape with emission. Diffuse emitters: radiance `emission`
+// leaves the front side (the side the geometric normal points to), both sides when two_sided.
+// Selection among lights is proportional to emitted power (or uniform); points are sampled
+// uniformly by area on meshes and quads, and by the cone of directions a sphere subtends when
+// seen from outside (uniformly by area from inside). All pdfs are per unit solid angle at the
+// reference point: area pdf * distance^2 / |cos theta_light|.
+//
+// A shape with emission but zero area (degenerate triangles) cannot be hit or sampled and is not
+// a light. Random numbers: uc picks the light, and what is left of it (Distribution1D's
+// u_remapped) picks the triangle of a mesh; u places the point.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "candela/core/platform.h"
+#include "candela/geometry/shape.h"
+#include "candela/geometry/sphere.h"
+#include "candela/geometry/triangle_mesh.h"
+#include "candela/lights/area_light.h"
+#include "candela/lights/light_sample.h"
+#include "candela/lights/light_selection.h"
+#include "candela/sampling/distribution_1d.h"
+
+namespace candela {
+
+class LightSet {
+  public:
+    LightSet() = default;
+    // The spans must outlive the set. Shapes with black emission are not lights.
+    LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres, std::span<const Shape> shapes,
+             LightSelection selection = LightSelection::kPower);
+
+    CANDELA_HD bool empty() const { return lights_.empty(); }
+    CANDELA_HD size_t size() const { return lights_.size(); }
+
+    // Samples a light (with uc) and a point on it (with u) as seen from `ref`.
+    // nullopt when nothing can be sampled (no lights, or a zero pdf). A point on the back of a
+    // one-sided light comes back with black Le and its true pdf (a sphere of reverse orientation
+    // seen from outside shows only its back).
+    CANDELA_HD std::optional<LightSample> sample(const Vec3f& ref, float uc, const Vec2f& u) const;
+
+    // The pdf per solid angle (selection included) with which sample() from `ref` would have
+    // produced point `p_light` with front normal `n_light` on shape `shape_id`; 0 if that shape
+    // is not a light. Bit-identical to the pdf sample() returned for that point.
+    CANDELA_HD float pdf(const Vec3f& ref, uint32_t shape_id, const Vec3f& p_light, const Vec3f& n_light) const;
+
+    // Radiance leaving a point of shape `shape_id` with front normal n in direction w (unit,
+    // pointing away from the surface); black for non-emitters and from behind one-sided ones.
+    CANDELA_HD Rgb emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w) const;
+
+    // The probability that sample() picks the light of shape `shape_id`; 0 if it is not a light.
+    CANDELA_HD float selection_probability(uint32_t shape_id) const;
+
+  private:
+    static constexpr uint32_t kNoLight = 0xffffffffu;
+
+    // The index in lights_ of shape `shape_id`, or kNoLight.
+    CANDELA_HD uint32_t light_index(uint32_t shape_id) const {
+        return shape_id < light_of_shape_.size() ? light_of_shape_[shape_id] : kNoLight;
+    }
+
+    std::vector<AreaLight> lights_;
+    std::vector<uint32_t> light_of_shape_;  // shape id -> index in lights_, or kNoLight
+    Distribution1D selection_;              // over lights_, by power or uniform
+};
+
+}  // namespace candela

@@ -1,0 +1,64 @@
+// Bsdf: uniform choice among the lobes, with pdfs and values combined as pbrt-v3's BSDF::Sample_f,
+// BSDF::Pdf and BSDF::f do, so that a direction sampled from one lobe is weighted by the density
+// of the whole mixture (the one-sample "balance" combination of the lobes' strategies).
+#include "candela/materials/bsdf.h"
+
+#include "candela/math/constants.h"
+
+namespace candela {
+
+CANDELA_HD Rgb Bsdf::eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
+    Rgb f(0.0f);
+    for (uint32_t k = 0; k < lobe_count; ++k)
+        f += visit([&](const auto& lobe) { return lobe.eval(wo, wi, mode); }, lobes[k]);
+    return f;
+}
+
+CANDELA_HD float Bsdf::pdf(const Vec3f& wo, const Vec3f& wi) const {
+    if (lobe_count == 0) return 0.0f;
+    float sum = 0.0f;
+    for (uint32_t k = 0; k < lobe_count; ++k)
+        sum += visit([&](const auto& lobe) { return lobe.pdf(wo, wi); }, lobes[k]);
+    return sum / static_cast<float>(lobe_count);
+}
+
+CANDELA_HD std::optional<BsdfSample> Bsdf::sample(const Vec3f& wo, float uc, const Vec2f& u,
+                                                  TransportMode mode) const {
+    if (lobe_count == 0) return std::nullopt;
+    // uc picks lobe k and is then stretched back over [0, 1) for the lobe's own discrete choice
+    // (pbrt-v3's uRemapped), so one number serves both without correlating them.
+    auto n = static_cast<float>(lobe_count);
+    uint32_t k = static_cast<uint32_t>(uc * n);
+    if (k >= lobe_count) k = lobe_count - 1;
+    float uc_lobe = clamp(uc * n - static_cast<float>(k), 0.0f, kOneMinusEpsilon);
+
+    std::optional<BsdfSample> s =
+        visit([&](const auto& lobe) { return lobe.sample(wo, uc_lobe, u, mode); }, lobes[k]);
+    if (!s || !(s->pdf > 0.0f)) return std::nullopt;
+    if (s->is_delta) {
+        // Only this lobe can have produced wi: the others' densities there are 0 (or, for other
+        // delta lobes, meet it with probability 0). The lobe choice divides the probability.
+        s->pdf /= n;
+        return s;
+    }
+    if (lobe_count > 1) {
+        s->f = eval(wo, s->wi, mode);
+        s->pdf = pdf(wo, s->wi);
+    }
+    return s;
+}
+
+CANDELA_HD bool Bsdf::is_delta_only() const {
+    for (uint32_t k = 0; k < lobe_count; ++k)
+        if (!visit([](const auto& lobe) { return lobe.is_delta(); }, lobes[k])) return false;
+    return true;
+}
+
+CANDELA_HD Rgb Bsdf::albedo() const {
+    Rgb sum(0.0f);
+    for (uint32_t k = 0; k < lobe_count; ++k)
+        sum += visit([](const auto& lobe) { return lobe.albedo(); }, lobes[k]);
+    return sum;
+}
+
+}  // namespace candela

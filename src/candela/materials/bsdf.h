@@ -1,0 +1,35 @@
+#pragma once
+// A BSDF: the sum of up to kMaxLobes lobes (pbrt-v3's BSDF of several BxDFs). Works in the local
+// shading frame, z = shading normal pointing to the surface's front; wo and wi point away from
+// the surface. f excludes the cosine. Sampling picks a lobe uniformly and, for a non-delta lobe,
+// returns the sum of all lobes' f and the average of all lobes' pdfs (delta lobes' pdf being 0),
+// so sample() and pdf() agree for MIS. f is not divided by the lobe count: keeping the sum
+// energy-conserving is the material's job.
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "candela/core/platform.h"
+#include "candela/materials/bsdf_lobes.h"
+#include "candela/materials/bsdf_sample.h"
+
+namespace candela {
+
+struct Bsdf {
+    static constexpr uint32_t kMaxLobes = 4;
+    std::array<BsdfLobe, kMaxLobes> lobes{};
+    uint32_t lobe_count = 0;
+
+    // Sum of the lobes' f (delta lobes contribute 0).
+    CANDELA_HD Rgb eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const;
+    // Average over all lobes of their pdf, per solid angle (delta lobes contribute 0).
+    CANDELA_HD float pdf(const Vec3f& wo, const Vec3f& wi) const;
+    // uc picks the lobe, u samples it. nullopt when sampling fails (e.g. below the hemisphere).
+    CANDELA_HD std::optional<BsdfSample> sample(const Vec3f& wo, float uc, const Vec2f& u, TransportMode mode) const;
+    // True when every lobe is a delta (light sampling is pointless then).
+    CANDELA_HD bool is_delta_only() const;
+    // The colour the `albedo` debug integrator shows: the sum of the lobes' reflectance/tint.
+    CANDELA_HD Rgb albedo() const;
+};
+
+}  // namespace candela

@@ -1,0 +1,16 @@
+#pragma once
+// The closed set of BSDF lobes a material combines (DESIGN.md: closed sets are variants). Each
+// alternative satisfies BsdfLobeType (bsdf_lobe.h). tests/materials/ runs its per-lobe checks
+// over every alternative and static_asserts this variant's size, so a new lobe must be added there.
+#include "candela/core/variant.h"
+#include "candela/materials/fresnel_specular.h"
+#include "candela/materials/lambertian.h"
+#include "candela/materials/specular_reflection.h"
+#include "candela/materials/specular_transmission.h"
+
+namespace candela {
+
+using BsdfLobe =
+    Variant<LambertianLobe, SpecularReflectionLobe, FresnelSpecularLobe, SpecularTransmissionLobe>;
+
+}  // namespace candela

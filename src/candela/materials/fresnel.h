@@ -1,0 +1,70 @@
+#pragma once
+// Reflection, refraction and the Fresnel reflectance of a smooth dielectric interface. `eta` is
+// always the relative index eta_t / eta_i across the interface as seen from the side its normal
+// points to (index behind the surface over index in front: 1.5 for glass in air); a direction or
+// cosine on the other side swaps the roles, so callers need not know which side they are on.
+#include <cmath>
+
+#include "candela/core/platform.h"
+#include "candela/math/constants.h"
+#include "candela/math/vec.h"
+
+namespace candela {
+
+// The mirror image of w about the normal n (both unit; w points away from the surface).
+CANDELA_HD inline Vec3f reflect(const Vec3f& w, const Vec3f& n) {
+    return -w + n * (2.0f * dot(w, n));
+}
+
+// Refracts wi (unit, pointing away from the surface, either side of n) through the interface of
+// relative index eta (see the top of the file) into *wt (unit, on the other side). Returns false
+// on total internal reflection, leaving *wt untouched; *eta_rel (if given) receives the index
+// eta_t / eta_i actually crossed: eta from n's side, 1 / eta from the other. (pbrt-v4 Refract.)
+CANDELA_HD inline bool refract(const Vec3f& wi, Vec3f n, float eta, Vec3f* wt,
+                               float* eta_rel = nullptr) {
+    float cos_i = dot(n, wi);
+    if (cos_i < 0.0f) {
+        eta = 1.0f / eta;
+        cos_i = -cos_i;
+        n = -n;
+    }
+    // Snell: eta_i sin(theta_i) = eta_t sin(theta_t), so sin^2(theta_t) = sin^2(theta_i) / eta^2.
+    float sin2_i = 1.0f - cos_i * cos_i;
+    float sin2_t = (sin2_i > 0.0f ? sin2_i : 0.0f) / (eta * eta);
+    if (sin2_t >= 1.0f) return false;
+    float cos_t = safe_sqrt(1.0f - sin2_t);
+    *wt = -wi / eta + n * (cos_i / eta - cos_t);
+    if (eta_rel != nullptr) *eta_rel = eta;
+    return true;
+}
+
+// The fraction of unpolarized light a smooth dielectric reflects, for incidence at cos_theta_i to
+// the normal (negative: from behind, where the index ratio is 1 / eta). 1 under total internal
+// reflection. The average of the s and p Fresnel equations (pbrt-v4 FrDielectric).
+CANDELA_HD inline float fresnel_dielectric(float cos_theta_i, float eta) {
+    cos_theta_i = clamp(cos_theta_i, -1.0f, 1.0f);
+    if (cos_theta_i < 0.0f) {
+        eta = 1.0f / eta;
+        cos_theta_i = -cos_theta_i;
+    }
+    float sin2_t = (1.0f - cos_theta_i * cos_theta_i) / (eta * eta);
+    if (sin2_t >= 1.0f) return 1.0f;
+    float cos_t = safe_sqrt(1.0f - sin2_t);
+    float r_parallel = (eta * cos_theta_i - cos_t) / (eta * cos_theta_i + cos_t);
+    float r_perpendicular = (cos_theta_i - eta * cos_t) / (cos_theta_i + eta * cos_t);
+    return 0.5f * (r_parallel * r_parallel + r_perpendicular * r_perpendicular);
+}
+
+// Reflectance at normal incidence, ((eta - 1) / (eta + 1))^2: the same from both sides.
+CANDELA_HD inline float fresnel_r0(float eta) { return sqr((eta - 1.0f) / (eta + 1.0f)); }
+
+// Schlick's approximation (1994, "An Inexpensive BRDF Model for Physically-based Rendering"):
+// r0 + (1 - r0) (1 - cos)^5, where cos_theta is measured on the optically thinner side (smallpt
+// takes the transmitted angle when light leaves glass; see FresnelSpecularLobe).
+CANDELA_HD inline float fresnel_schlick(float r0, float cos_theta) {
+    float c = 1.0f - clamp(std::abs(cos_theta), 0.0f, 1.0f);
+    float c2 = c * c;
+    return r0 + (1.0f - r0) * c2 * c2 * c;
+}
+
+}  // namespace candela

@@ -1,0 +1,42 @@
+#pragma once
+// The ideal diffuse lobe: f = albedo / pi in the hemisphere of wo, importance sampled by the
+// cosine. It reflects on whichever side wo lies (a two-sided surface), because a shading normal
+// may face either way; the integrator decides which side is lit.
+#include <optional>
+
+#include "candela/materials/bsdf_lobe.h"
+#include "candela/sampling/warps.h"
+
+namespace candela {
+
+struct LambertianLobe {
+    Rgb reflectance{0.5f};  // directional albedo: the fraction of light reflected, per channel
+
+    // albedo / pi when wo and wi share a hemisphere, else 0.
+    CANDELA_HD Rgb eval(const Vec3f& wo, const Vec3f& wi, TransportMode) const {
+        return same_hemisphere(wo, wi) ? reflectance * kInvPi : Rgb(0.0f);
+    }
+    // |cos(theta_i)| / pi in wo's hemisphere, else 0.
+    CANDELA_HD float pdf(const Vec3f& wo, const Vec3f& wi) const {
+        return same_hemisphere(wo, wi) ? abs_cos_theta(wi) * kInvPi : 0.0f;
+    }
+    // A cosine-distributed wi on wo's side (uc unused). Since f |cos| / pdf = albedo for every
+    // sample, the estimator of the directional albedo has no variance (Nori's diffuse.cpp).
+    CANDELA_HD std::optional<BsdfSample> sample(const Vec3f& wo, float, const Vec2f& u,
+                                                TransportMode mode) const {
+        Vec3f wi = sample_cosine_hemisphere(u);
+        if (wo.z < 0.0f) wi.z = -wi.z;
+        // wo in the surface's plane, or wi drawn on the disk's rim: no hemisphere holds both.
+        if (!same_hemisphere(wo, wi)) return std::nullopt;
+        BsdfSample s;
+        s.f = eval(wo, wi, mode);
+        s.wi = wi;
+        s.pdf = pdf(wo, wi);
+        return s;
+    }
+    CANDELA_HD bool is_delta() const { return false; }
+    CANDELA_HD Rgb albedo() const { return reflectance; }
+};
+static_assert(BsdfLobeType<LambertianLobe>);
+
+}  // namespace candela

@@ -1,0 +1,31 @@
+#include "candela/render/path_common.h"
+#include "candela/render/transport_integrators.h"
+
+namespace candela {
+
+// smallpt's radiance(): follow BSDF samples and add emission wherever the path lands.
+Rgb BsdfIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& counters) const {
+    Rgb L(0.0f), beta(1.0f);
+    float eta_scale = 1.0f;
+    Ray ray = camera_ray;
+    for (int bounces = 0;; ++bounces) {
+        ++(bounces == 0 ? counters.camera : counters.bounce);
+        std::optional<SurfaceHit> hit = accel_.intersect(ray);
+        if (!hit) break;
+        L += beta * lights_.emitted(hit->shape_id, hit->ng, -ray.d);
+        if (bounces == scene_.integrator.max_depth) break;
+
+        PathVertex v(scene_, *hit, ray);
+        float uc = rng.next_float();
+        Vec2f u = rng.next_vec2f();
+        std::optional<BsdfSample> bs = v.bsdf.sample(v.wo, uc, u, TransportMode::kRadiance);
+        if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) break;
+        beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
+        if (bs->is_transmission) eta_scale *= sqr(bs->eta);
+        ray = spawn_ray(*hit, v.frame.to_world(bs->wi));
+        if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, rng)) break;
+    }
+    return L;
+}
+
+}  // namespace candela

@@ -1,0 +1,70 @@
+#pragma once
+// Pieces the light-transport integrators share: the surface a path stands on, MIS weights,
+// Russian roulette and next-event estimation.
+#include "candela/geometry/accelerator.h"
+#include "candela/geometry/ray_offset.h"
+#include "candela/lights/light_set.h"
+#include "candela/materials/bsdf.h"
+#include "candela/math/frame.h"
+#include "candela/render/ray_counters.h"
+#include "candela/render/render_settings.h"
+#include "candela/sampling/rng.h"
+#include "candela/scene/scene.h"
+
+namespace candela {
+
+// A hit seen from the ray that found it: its BSDF in the shading frame and the outgoing direction.
+struct PathVertex {
+    const SurfaceHit& hit;
+    const Bsdf& bsdf;
+    Frame frame;  // z = shading normal, on the shape's front side
+    Vec3f wo;     // towards where the path came from, local
+
+    PathVertex(const Scene& scene, const SurfaceHit& h, const Ray& ray)
+        : hit(h),
+          bsdf(scene.materials[scene.shapes[h.shape_id].material].bsdf),
+          frame(Frame::from_normal(h.ns)),
+          wo(frame.to_local(-ray.d)) {}
+};
+
+// Veach's power heuristic with beta = 2 (one sample from each strategy).
+inline float power_heuristic(float pdf_a, float pdf_b) {
+    float a = pdf_a * pdf_a, b = pdf_b * pdf_b;
+    return a + b > 0.0f ? a / (a + b) : 0.0f;
+}
+
+// Russian roulette after the path's bounce number `bounces` (1 = first scattering): the first
+// rr_depth bounces are never cut. Returns false when the path ends, otherwise divides
+// beta by the survival probability. By default the survival probability is the throughput's
+// largest component (with refraction's eta^2 radiance scaling taken out, as pbrt-v4 does, so a
+// path inside glass is not killed for being compressed); a fixed probability when the settings
+// give one (GAMES101's 0.8).
+inline bool survive_russian_roulette(Rgb& beta, float eta_scale, int bounces, const IntegratorSettings& s, Rng& rng) {
+    float u = rng.next_float();  // drawn every bounce so later dimensions do not shift
+    if (bounces <= s.rr_depth) return true;
+    float survive = s.rr_probability > 0.0f ? s.rr_probability : std::min(1.0f, (beta * eta_scale).max_component());
+    if (survive <= 0.0f || u >= survive) return false;
+    beta = beta / survive;
+    return true;
+}
+
+// One light sample for the vertex: f |cos| Le / pdf, weighted by the power heuristic against
+// BSDF sampling when `mis`. Counts its shadow ray. Black for delta-only BSDFs.
+inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, const Accelerator& accel, bool mis,
+                               Rng& rng, RayCounters& counters) {
+    float uc = rng.next_float();
+    Vec2f u = rng.next_vec2f();
+    if (v.bsdf.is_delta_only() || lights.empty()) return Rgb(0.0f);
+    std::optional<LightSample> ls = lights.sample(v.hit.p, uc, u);
+    if (!ls || ls->pdf <= 0.0f || ls->Le.is_black()) return Rgb(0.0f);
+    Vec3f wi_world = normalize(ls->p - v.hit.p);
+    Vec3f wi = v.frame.to_local(wi_world);
+    Rgb f = v.bsdf.eval(v.wo, wi, TransportMode::kRadiance) * std::abs(wi.z);
+    if (f.is_black()) return Rgb(0.0f);
+    ++counters.shadow;
+    if (accel.occluded(spawn_ray_to(v.hit, ls->p))) return Rgb(0.0f);
+    float w = mis ? power_heuristic(ls->pdf, v.bsdf.pdf(v.wo, wi)) : 1.0f;
+    return f * ls->Le * (w / ls->pdf);
+}
+
+}  // namespace candela

@@ -1,0 +1,51 @@
+#include "candela/render/path_common.h"
+#include "candela/render/transport_integrators.h"
+
+namespace candela {
+
+// pbrt-v4's PathIntegrator::Li, without environment lights (yet). At each vertex: emission found
+// by the BSDF-sampled ray (MIS-weighted against having sampled the light), then one light sample
+// (MIS-weighted against having sampled the BSDF), then the next direction by BSDF sampling.
+Rgb PathIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& counters) const {
+    Rgb L(0.0f), beta(1.0f);
+    float eta_scale = 1.0f;  // product of eta^2 over refractions, to undo them for roulette
+    Ray ray = camera_ray;
+    bool after_delta = false;  // the last bounce was a delta lobe: NEE could not have found the light
+    float prev_bsdf_pdf = 0.0f;
+    Vec3f prev_p;
+    for (int bounces = 0;; ++bounces) {
+        ++(bounces == 0 ? counters.camera : counters.bounce);
+        std::optional<SurfaceHit> hit = accel_.intersect(ray);
+        if (!hit) break;
+
+        Rgb Le = lights_.emitted(hit->shape_id, hit->ng, -ray.d);
+        if (!Le.is_black()) {
+            if (bounces == 0 || after_delta) {
+                L += beta * Le;
+            } else if (scene_.integrator.mis) {
+                float light_pdf = lights_.pdf(prev_p, hit->shape_id, hit->p, hit->ng);
+                L += beta * Le * power_heuristic(prev_bsdf_pdf, light_pdf);
+            }
+            // Without MIS, NEE alone accounts for light reached after a non-delta bounce.
+        }
+        if (bounces == scene_.integrator.max_depth) break;
+
+        PathVertex v(scene_, *hit, ray);
+        L += beta * sample_direct_light(v, lights_, accel_, scene_.integrator.mis, rng, counters);
+
+        float uc = rng.next_float();
+        Vec2f u = rng.next_vec2f();
+        std::optional<BsdfSample> bs = v.bsdf.sample(v.wo, uc, u, TransportMode::kRadiance);
+        if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) break;
+        beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
+        if (bs->is_transmission) eta_scale *= sqr(bs->eta);
+        after_delta = bs->is_delta;
+        prev_bsdf_pdf = bs->pdf;
+        prev_p = hit->p;
+        ray = spawn_ray(*hit, v.frame.to_world(bs->wi));
+        if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, rng)) break;
+    }
+    return L;
+}
+
+}  // namespace candela

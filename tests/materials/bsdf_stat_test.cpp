@@ -1,0 +1,193 @@
+// Statistical tests of BSDF sampling: chi-square goodness of fit of Bsdf::sample against
+// Bsdf::pdf for every non-delta configuration (tests/support/chi2.h, the full sphere of
+// directions, so a sample on the wrong side fails in a zero-pdf cell), and white-furnace
+// estimates of each lobe's directional albedo.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "candela/materials/bsdf.h"
+#include "materials/lobe_cases.h"
+#include "support/chi2.h"
+
+namespace candela::test {
+namespace {
+
+constexpr TransportMode kRadiance = TransportMode::kRadiance;
+
+// The chi-square tests in this file, for the Sidak correction.
+constexpr int kChi2Tests = 11;
+
+Bsdf bsdf_of(std::initializer_list<BsdfLobe> lobes) {
+    Bsdf b;
+    for (const BsdfLobe& lobe : lobes) b.lobes[b.lobe_count++] = lobe;
+    return b;
+}
+
+// Fits the directions Bsdf::sample draws from its non-delta lobes against Bsdf::pdf. Delta
+// samples are left out (nullopt), so the pdf integrates to the probability of choosing a
+// non-delta lobe: `non_delta_fraction`. The horizon cos theta = 0 is a row edge of the 50 rows.
+void expect_sampling_fits_pdf(const Bsdf& bsdf, Vec3f wo, double non_delta_fraction) {
+    Chi2Options opt;
+    opt.test_count = kChi2Tests;
+    opt.expected_integral = non_delta_fraction;
+    auto sampler = [&](Rng& rng) -> std::optional<Vec3f> {
+        float uc = rng.next_float();
+        auto s = bsdf.sample(wo, uc, rng.next_vec2f(), kRadiance);
+        if (!s || s->is_delta) return std::nullopt;
+        return s->wi;
+    };
+    auto pdf = [&](Vec3f wi) { return bsdf.pdf(wo, wi); };
+    Chi2Result r = chi2_test(SphericalDomain{}, sampler, pdf, opt);
+    EXPECT_TRUE(r.passed) << r.message;
+}
+
+Bsdf lambertian() { return bsdf_of({LambertianLobe{Rgb(0.7f)}}); }
+
+TEST(LambertianChi2, NormalIncidence) {
+    expect_sampling_fits_pdf(lambertian(), direction(1.0f, 0.0f), 1.0);
+}
+TEST(LambertianChi2, Oblique) {
+    expect_sampling_fits_pdf(lambertian(), direction(0.5f, 1.0f), 1.0);
+}
+TEST(LambertianChi2, Grazing) {
+    expect_sampling_fits_pdf(lambertian(), direction(0.01f, 2.0f), 1.0);
+}
+TEST(LambertianChi2, BelowTheSurface) {
+    expect_sampling_fits_pdf(lambertian(), direction(-0.6f, -1.0f), 1.0);
+}
+TEST(LambertianChi2, GrazingBelowTheSurface) {
+    expect_sampling_fits_pdf(lambertian(), direction(-0.01f, 0.5f), 1.0);
+}
+
+TEST(MixChi2, LambertianAndMirrorHalveTheDensity) {
+    Bsdf b = bsdf_of({LambertianLobe{Rgb(0.5f)}, SpecularReflectionLobe{Rgb(0.5f)}});
+    expect_sampling_fits_pdf(b, direction(0.7f, 0.3f), 0.5);
+}
+TEST(MixChi2, LambertianAndMirrorBelowTheSurface) {
+    Bsdf b = bsdf_of({SpecularReflectionLobe{Rgb(0.5f)}, LambertianLobe{Rgb(0.5f)}});
+    expect_sampling_fits_pdf(b, direction(-0.4f, 2.0f), 0.5);
+}
+TEST(MixChi2, LambertianAndDielectric) {
+    Bsdf b = bsdf_of({LambertianLobe{Rgb(0.3f)}, FresnelSpecularLobe{Rgb(1.0f), 1.5f, false}});
+    expect_sampling_fits_pdf(b, direction(0.2f, 1.5f), 0.5);
+}
+TEST(MixChi2, LambertianAndTransmissionUnderTotalInternalReflection) {
+    // From inside glass at 60 degrees the transmission lobe fails; its share still counts.
+    Bsdf b = bsdf_of({SpecularTransmissionLobe{Rgb(1.0f), 1.5f}, LambertianLobe{Rgb(0.3f)}});
+    expect_sampling_fits_pdf(b, direction(-0.5f, 0.0f), 0.5);
+}
+TEST(MixChi2, TwoLambertiansAreOneCosineDensity) {
+    Bsdf b = bsdf_of({LambertianLobe{Rgb(0.3f)}, LambertianLobe{Rgb(0.6f)}});
+    expect_sampling_fits_pdf(b, direction(0.8f, -0.5f), 1.0);
+}
+TEST(MixChi2, ThreeLobesWithTwoDelta) {
+    Bsdf b = bsdf_of({SpecularReflectionLobe{Rgb(0.2f)}, LambertianLobe{Rgb(0.3f)},
+                      FresnelSpecularLobe{Rgb(0.4f), 1.33f, true}});
+    expect_sampling_fits_pdf(b, direction(0.45f, 2.5f), 1.0 / 3.0);
+}
+
+// ---- white furnace: the directional albedo E[f |cos| / pdf] of each lobe
+
+constexpr int kFurnaceSamples = 200'000;
+
+// Mean and standard error of the sample weights f |cos| / pdf (red channel), failed samples
+// counting 0, over kFurnaceSamples draws; both transport modes are checked by the callers.
+struct Estimate {
+    double mean = 0.0;
+    double standard_error = 0.0;
+};
+Estimate directional_albedo(const Bsdf& bsdf, Vec3f wo, TransportMode mode, uint64_t seed) {
+    Rng rng(seed, 5);
+    double sum = 0.0, sum_sq = 0.0;
+    for (int i = 0; i < kFurnaceSamples; ++i) {
+        float uc = rng.next_float();
+        auto s = bsdf.sample(wo, uc, rng.next_vec2f(), mode);
+        double w = s ? double(s->f.r) * double(std::abs(s->wi.z)) / double(s->pdf) : 0.0;
+        sum += w;
+        sum_sq += w * w;
+    }
+    double n = kFurnaceSamples, mean = sum / n;
+    double variance = std::max(0.0, sum_sq / n - mean * mean);
+    return {mean, std::sqrt(variance / (n - 1.0))};
+}
+
+// The estimate must be within 5 standard errors (plus float rounding) of `expected`.
+void expect_albedo(const Estimate& e, double expected) {
+    EXPECT_NEAR(e.mean, expected, 5.0 * e.standard_error + 1e-5 * expected);
+}
+
+TEST(LobeFurnace, EveryLobeSampledGivesItsDirectionalAlbedo) {
+    // Importance mode: no eta^2 factor. The expected albedo in closed form per lobe: Lambertian
+    // and mirror their albedo, the dielectric its tint (F + (1 - F) = 1), transmission
+    // tint (1 - F) or 0 under total internal reflection.
+    for (const LobeCase& c : kLobeCases) {
+        Bsdf b = bsdf_of({c.lobe});
+        for (const Vec3f& wo : probe_directions()) {
+            SCOPED_TRACE(testing::Message() << c.name << ", wo.z = " << wo.z);
+            double expected = visit(
+                Overloaded{[](const LambertianLobe& l) { return double(l.reflectance.r); },
+                           [](const SpecularReflectionLobe& l) { return double(l.reflectance.r); },
+                           [](const FresnelSpecularLobe& l) { return double(l.tint.r); },
+                           [&](const SpecularTransmissionLobe& l) {
+                               double f = fresnel_dielectric(wo.z, l.eta);
+                               return double(l.tint.r) * (1.0 - f);
+                           }},
+                c.lobe);
+            Estimate e = directional_albedo(b, wo, TransportMode::kImportance, 17);
+            expect_albedo(e, expected);
+            EXPECT_LE(e.mean, 1.0 + 1e-5);
+        }
+    }
+}
+
+TEST(LobeFurnace, LambertianEvalIntegratesToItsAlbedo) {
+    // Independent of the sampler: integrate f |cos| over the sphere with uniform directions.
+    // The estimator 4 pi f |cos| has variance 5 albedo^2 / 3, bounded here by its measured one.
+    LambertianLobe lobe{Rgb(0.7f)};
+    for (const Vec3f& wo : {direction(0.8f, 0.0f), direction(-0.3f, 1.0f)}) {
+        Rng rng(23, 9);
+        double sum = 0.0, sum_sq = 0.0;
+        const int n = 400'000;
+        for (int i = 0; i < n; ++i) {
+            Vec3f wi = sample_uniform_sphere(rng.next_vec2f());
+            double f = lobe.eval(wo, wi, kRadiance).r;
+            double w = f * double(std::abs(wi.z)) / double(kInv4Pi);
+            sum += w;
+            sum_sq += w * w;
+        }
+        double mean = sum / n, se = std::sqrt((sum_sq / n - mean * mean) / (n - 1.0));
+        EXPECT_NEAR(mean, 0.7, 5.0 * se);
+    }
+}
+
+TEST(LobeFurnace, HalfDiffuseHalfMirrorIsWhite) {
+    // Every sample of 0.5 diffuse + 0.5 mirror weighs exactly 1 (see bsdf_test.cpp), so the
+    // estimate has no variance.
+    Bsdf b = bsdf_of({LambertianLobe{Rgb(0.5f)}, SpecularReflectionLobe{Rgb(0.5f)}});
+    for (const Vec3f& wo : probe_directions())
+        EXPECT_NEAR(directional_albedo(b, wo, kRadiance, 3).mean, 1.0, 1e-5);
+}
+
+TEST(LobeFurnace, DielectricReflectsWithTheFresnelFrequency) {
+    // The fraction of reflected samples is binomial with p = F: within 5 standard deviations.
+    for (bool schlick : {false, true}) {
+        FresnelSpecularLobe lobe{Rgb(1.0f), 1.5f, schlick};
+        for (const Vec3f& wo : probe_directions()) {
+            Rng rng(29, 3);
+            const int n = 100'000;
+            int reflected = 0;
+            for (int i = 0; i < n; ++i) {
+                auto s = lobe.sample(wo, rng.next_float(), rng.next_vec2f(), kRadiance);
+                ASSERT_TRUE(s);
+                if (!s->is_transmission) ++reflected;
+            }
+            double p = lobe.reflectance(wo);
+            EXPECT_NEAR(double(reflected) / n, p, 5.0 * std::sqrt(p * (1.0 - p) / n) + 1e-9)
+                << "schlick " << schlick << ", wo.z = " << wo.z;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace candela::test

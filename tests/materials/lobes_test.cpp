@@ -1,0 +1,287 @@
+// Every BSDF lobe: sample() agrees with eval() and pdf(), delta lobes have no density, the sample
+// weights f |cos| / pdf conserve energy, and the transport mode scales refraction only. Then each
+// lobe against its closed form.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "candela/materials/bsdf_lobes.h"
+#include "candela/sampling/rng.h"
+#include "materials/lobe_cases.h"
+#include "support/printers.h"
+
+namespace candela::test {
+namespace {
+
+constexpr TransportMode kRadiance = TransportMode::kRadiance;
+constexpr TransportMode kImportance = TransportMode::kImportance;
+
+// f |cos wi| / pdf: what a sample multiplies the path throughput by.
+Rgb weight(const BsdfSample& s) { return s.f * (std::abs(s.wi.z) / s.pdf); }
+
+void expect_rgb_near(const Rgb& a, const Rgb& b, float tol) {
+    EXPECT_NEAR(a.r, b.r, tol);
+    EXPECT_NEAR(a.g, b.g, tol);
+    EXPECT_NEAR(a.b, b.b, tol);
+}
+
+// Calls check(case, wo, uc, u) for every lobe case, probe direction and 64 random (uc, u).
+template <class F>
+void for_each_lobe_sample(F check) {
+    for (const LobeCase& c : kLobeCases) {
+        Rng rng(7, 1);
+        for (const Vec3f& wo : probe_directions()) {
+            for (int i = 0; i < 64; ++i) {
+                float uc = rng.next_float();
+                Vec2f u = rng.next_vec2f();
+                SCOPED_TRACE(testing::Message() << c.name << ", wo = (" << wo.x << ", " << wo.y
+                                                << ", " << wo.z << "), uc = " << uc);
+                check(c, wo, uc, u);
+            }
+        }
+    }
+}
+
+TEST(BsdfLobes, EveryAlternativeHasACase) {
+    std::set<size_t> covered;
+    for (const LobeCase& c : kLobeCases) covered.insert(c.lobe.index());
+    EXPECT_EQ(covered.size(), std::variant_size_v<BsdfLobe>);
+}
+
+TEST(BsdfLobes, SampleAgreesWithEvalAndPdf) {
+    for_each_lobe_sample([](const LobeCase& c, Vec3f wo, float uc, Vec2f u) {
+        visit([&](const auto& lobe) {
+            auto s = lobe.sample(wo, uc, u, kRadiance);
+            if (!s) return;
+            EXPECT_NEAR(length(s->wi), 1.0f, 1e-5f);
+            EXPECT_GT(s->pdf, 0.0f);
+            EXPECT_EQ(s->is_delta, lobe.is_delta());
+            EXPECT_EQ(s->is_transmission, s->wi.z * wo.z < 0.0f);
+            if (!s->is_transmission) {
+                EXPECT_EQ(s->eta, 1.0f);
+            }
+            if (s->is_delta) {
+                // The density and value of a delta lobe live in sample() only.
+                EXPECT_EQ(lobe.eval(wo, s->wi, kRadiance), Rgb(0.0f));
+                EXPECT_EQ(lobe.pdf(wo, s->wi), 0.0f);
+            } else {
+                EXPECT_EQ(s->f, lobe.eval(wo, s->wi, kRadiance));
+                EXPECT_EQ(s->pdf, lobe.pdf(wo, s->wi));
+            }
+        }, c.lobe);
+    });
+}
+
+TEST(BsdfLobes, SampleWeightNeverExceedsAlbedo) {
+    // In importance mode (no eta^2 factor) nothing may scatter more than its albedo or tint.
+    for_each_lobe_sample([](const LobeCase& c, Vec3f wo, float uc, Vec2f u) {
+        visit([&](const auto& lobe) {
+            auto s = lobe.sample(wo, uc, u, kImportance);
+            if (!s) return;
+            Rgb w = weight(*s), a = lobe.albedo();
+            EXPECT_LE(w.r, a.r * (1.0f + 1e-5f));
+            EXPECT_LE(w.g, a.g * (1.0f + 1e-5f));
+            EXPECT_LE(w.b, a.b * (1.0f + 1e-5f));
+            EXPECT_LE(a.max_component(), 1.0f);
+        }, c.lobe);
+    });
+}
+
+TEST(BsdfLobes, RadianceModeDividesTransmissionByEtaSquared) {
+    for_each_lobe_sample([](const LobeCase& c, Vec3f wo, float uc, Vec2f u) {
+        visit([&](const auto& lobe) {
+            auto radiance = lobe.sample(wo, uc, u, kRadiance);
+            auto importance = lobe.sample(wo, uc, u, kImportance);
+            ASSERT_EQ(radiance.has_value(), importance.has_value());
+            if (!radiance) return;
+            EXPECT_EQ(radiance->wi, importance->wi);
+            EXPECT_EQ(radiance->pdf, importance->pdf);
+            float scale = radiance->is_transmission ? 1.0f / (radiance->eta * radiance->eta) : 1.0f;
+            float tol = 1e-5f * importance->f.max_component();
+            expect_rgb_near(radiance->f, importance->f * scale, tol);
+        }, c.lobe);
+    });
+}
+
+TEST(BsdfLobes, NothingScattersFromTheSurfacePlane) {
+    for (const LobeCase& c : kLobeCases) {
+        visit([&](const auto& lobe) {
+            EXPECT_FALSE(lobe.sample(Vec3f(1, 0, 0), 0.3f, Vec2f(0.4f, 0.6f), kRadiance)) << c.name;
+        }, c.lobe);
+    }
+}
+
+// ---- Lambertian
+
+TEST(LambertianLobe, EvalAndPdfAreCosineLawInWosHemisphere) {
+    LambertianLobe lobe{Rgb(0.6f, 0.3f, 0.9f)};
+    for (float sign : {1.0f, -1.0f}) {
+        Vec3f wo = direction(sign * 0.7f, 1.0f);
+        Vec3f same = direction(sign * 0.4f, 2.5f), other = direction(-sign * 0.4f, 2.5f);
+        EXPECT_EQ(lobe.eval(wo, same, kRadiance), Rgb(0.6f, 0.3f, 0.9f) * kInvPi);
+        EXPECT_EQ(lobe.eval(wo, other, kRadiance), Rgb(0.0f));
+        EXPECT_FLOAT_EQ(lobe.pdf(wo, same), 0.4f * kInvPi);
+        EXPECT_EQ(lobe.pdf(wo, other), 0.0f);
+    }
+    EXPECT_EQ(lobe.albedo(), Rgb(0.6f, 0.3f, 0.9f));
+    EXPECT_FALSE(lobe.is_delta());
+}
+
+TEST(LambertianLobe, SamplesLandOnWosSideWithWeightAlbedo) {
+    // Cosine sampling cancels f |cos| / pdf to the albedo exactly (Nori's diffuse.cpp): the
+    // directional albedo estimator has no variance, so each sample must give it.
+    LambertianLobe lobe{Rgb(0.8f, 0.5f, 0.2f)};
+    Rng rng(3, 4);
+    for (const Vec3f& wo : probe_directions()) {
+        for (int i = 0; i < 1000; ++i) {
+            auto s = lobe.sample(wo, rng.next_float(), rng.next_vec2f(), kRadiance);
+            ASSERT_TRUE(s);
+            EXPECT_GT(s->wi.z * wo.z, 0.0f);
+            expect_rgb_near(weight(*s), lobe.albedo(), 1e-5f);
+        }
+    }
+}
+
+// ---- mirror
+
+TEST(SpecularReflectionLobe, ReflectsMirrorImageWithWeightAlbedo) {
+    SpecularReflectionLobe lobe{Rgb(0.9f, 0.6f, 0.3f)};
+    for (const Vec3f& wo : probe_directions()) {
+        auto s = lobe.sample(wo, 0.5f, Vec2f(0.5f, 0.5f), kRadiance);
+        ASSERT_TRUE(s);
+        EXPECT_EQ(s->wi, Vec3f(-wo.x, -wo.y, wo.z));
+        EXPECT_EQ(s->pdf, 1.0f);
+        EXPECT_TRUE(s->is_delta);
+        expect_rgb_near(weight(*s), lobe.albedo(), 1e-6f);
+    }
+}
+
+// ---- dielectric
+
+TEST(FresnelSpecularLobe, ReflectionAndRefractionWeightsSumToTintAtEveryAngle) {
+    const Rgb tint(1.0f, 0.9f, 0.8f);
+    for (bool schlick : {false, true}) {
+        for (float eta : {1.5f, 1.0f / 1.33f}) {
+            FresnelSpecularLobe lobe{tint, eta, schlick};
+            for (int i = -1000; i <= 1000; ++i) {
+                if (i == 0) continue;
+                Vec3f wo = direction(static_cast<float>(i) / 1000.0f, 0.1f * static_cast<float>(i));
+                SCOPED_TRACE(testing::Message() << "schlick " << schlick << ", eta " << eta
+                                                << ", cos " << wo.z);
+                float f = lobe.reflectance(wo);
+                ASSERT_GE(f, 0.0f);
+                ASSERT_LE(f, 1.0f);
+                // uc = 0 reflects unless F = 0; uc just below 1 refracts unless F = 1 (TIR).
+                auto first = lobe.sample(wo, 0.0f, Vec2f(0.5f, 0.5f), kRadiance);
+                auto last = lobe.sample(wo, kOneMinusEpsilon, Vec2f(0.5f, 0.5f), kRadiance);
+                ASSERT_TRUE(first && last);
+                ASSERT_FALSE(first->is_transmission);
+                EXPECT_EQ(first->pdf, f);
+                expect_rgb_near(weight(*first), tint, 1e-5f);
+                if (f == 1.0f) {  // total internal reflection
+                    EXPECT_FALSE(last->is_transmission);
+                    EXPECT_EQ(last->pdf, 1.0f);
+                    continue;
+                }
+                ASSERT_TRUE(last->is_transmission);
+                EXPECT_FLOAT_EQ(last->pdf, 1.0f - f);
+                float eta_rel = wo.z > 0.0f ? eta : 1.0f / eta;
+                EXPECT_FLOAT_EQ(last->eta, eta_rel);
+                // With the radiance factor 1 / eta'^2 removed, F + (1 - F) = 1: the expected
+                // weight is the tint.
+                Rgb transmitted = weight(*last) * (eta_rel * eta_rel);
+                expect_rgb_near(transmitted, tint, 1e-4f);
+                expect_rgb_near(weight(*first) * first->pdf + transmitted * last->pdf, tint, 1e-4f);
+            }
+        }
+    }
+}
+
+TEST(FresnelSpecularLobe, ChoosesReflectionWithProbabilityF) {
+    FresnelSpecularLobe lobe{Rgb(1.0f), 1.5f, false};
+    Vec3f wo = direction(0.3f, 0.0f);
+    float f = fresnel_dielectric(0.3f, 1.5f);
+    EXPECT_EQ(lobe.reflectance(wo), f);
+    EXPECT_FALSE(lobe.sample(wo, f * 0.999f, Vec2f(), kRadiance)->is_transmission);
+    EXPECT_TRUE(lobe.sample(wo, f * 1.001f, Vec2f(), kRadiance)->is_transmission);
+}
+
+TEST(FresnelSpecularLobe, RefractsBySnellsLawWithTheRadianceFactor) {
+    // Normal incidence on glass: 4% reflected; the transmitted 96% of radiance is compressed into
+    // a solid angle 1.5^2 times smaller on the way in, and expands on the way out.
+    FresnelSpecularLobe lobe{Rgb(1.0f), 1.5f, false};
+    auto in = lobe.sample(Vec3f(0, 0, 1), 0.5f, Vec2f(), kRadiance);
+    ASSERT_TRUE(in && in->is_transmission);
+    EXPECT_NEAR(in->wi.z, -1.0f, 1e-6f);
+    expect_rgb_near(weight(*in), Rgb(1.0f / 2.25f), 1e-6f);
+    auto in_importance = lobe.sample(Vec3f(0, 0, 1), 0.5f, Vec2f(), kImportance);
+    expect_rgb_near(weight(*in_importance), Rgb(1.0f), 1e-6f);
+    auto out = lobe.sample(Vec3f(0, 0, -1), 0.5f, Vec2f(), kRadiance);
+    ASSERT_TRUE(out && out->is_transmission);
+    EXPECT_FLOAT_EQ(out->eta, 1.0f / 1.5f);
+    expect_rgb_near(weight(*out), Rgb(2.25f), 1e-5f);
+    // Oblique: n_i sin(theta_i) = n_t sin(theta_t).
+    Vec3f wo = direction(0.5f, 1.0f);
+    auto t = lobe.sample(wo, kOneMinusEpsilon, Vec2f(), kRadiance);
+    ASSERT_TRUE(t && t->is_transmission);
+    auto sin_theta = [](Vec3f w) { return std::sqrt(w.x * w.x + w.y * w.y); };
+    EXPECT_NEAR(sin_theta(wo), 1.5f * sin_theta(t->wi), 1e-5f);
+}
+
+TEST(FresnelSpecularLobe, SchlickFollowsSmallpt) {
+    // smallpt: R0 = ((nt - nc) / (nt + nc))^2, c = 1 - cos of the angle in air (the incident one
+    // entering, the refracted one leaving), Re = R0 + (1 - R0) c^5; total internal reflection
+    // reflects everything.
+    const double n = 1.5;
+    FresnelSpecularLobe lobe{Rgb(1.0f), 1.5f, true};
+    for (int i = -99; i <= 99; ++i) {
+        if (i == 0) continue;
+        double cos_o = i / 100.0;
+        Vec3f wo = direction(static_cast<float>(cos_o), 0.0f);
+        double r0 = std::pow((n - 1.0) / (n + 1.0), 2.0);
+        double cos_air;
+        if (cos_o > 0.0) {
+            cos_air = cos_o;
+        } else {
+            double sin_t = n * std::sqrt(1.0 - cos_o * cos_o);
+            if (sin_t >= 1.0) {
+                EXPECT_EQ(lobe.reflectance(wo), 1.0f) << "cos " << cos_o;
+                continue;
+            }
+            cos_air = std::sqrt(1.0 - sin_t * sin_t);
+        }
+        double expected = r0 + (1.0 - r0) * std::pow(1.0 - cos_air, 5.0);
+        EXPECT_NEAR(lobe.reflectance(wo), expected, 2e-5) << "cos " << cos_o;
+    }
+}
+
+// ---- transmission
+
+TEST(SpecularTransmissionLobe, WeightIsOneMinusFresnelAndBlackUnderTotalInternalReflection) {
+    const Rgb tint(0.7f, 0.8f, 0.9f);
+    SpecularTransmissionLobe lobe{tint, 1.5f};
+    for (int i = -999; i <= 999; ++i) {
+        if (i == 0) continue;
+        Vec3f wo = direction(static_cast<float>(i) / 1000.0f, 0.5f);
+        SCOPED_TRACE(testing::Message() << "cos " << wo.z);
+        auto s = lobe.sample(wo, 0.5f, Vec2f(0.5f, 0.5f), kImportance);
+        float f = fresnel_dielectric(wo.z, 1.5f);
+        if (f == 1.0f) {
+            EXPECT_FALSE(s);
+            continue;
+        }
+        ASSERT_TRUE(s);
+        EXPECT_TRUE(s->is_transmission);
+        EXPECT_EQ(s->pdf, 1.0f);
+        Vec3f wt;
+        ASSERT_TRUE(refract(wo, Vec3f(0, 0, 1), 1.5f, &wt));
+        EXPECT_EQ(s->wi, wt);
+        expect_rgb_near(weight(*s), tint * (1.0f - f), 1e-5f);
+        auto r = lobe.sample(wo, 0.5f, Vec2f(0.5f, 0.5f), kRadiance);
+        expect_rgb_near(weight(*r) * (s->eta * s->eta), tint * (1.0f - f), 1e-5f);
+    }
+}
+
+}  // namespace
+}  // namespace candela::test

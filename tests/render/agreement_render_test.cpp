@@ -1,0 +1,157 @@
+// Agreement of the estimators (DESIGN.md, "Correctness"): path tracing with MIS, with next-event
+// estimation only, and with BSDF sampling only are unbiased estimators of the same image, so their
+// renders of one scene must agree within their noise. Each pair is compared per block of pixels
+// and channel by z = (m_a - m_b) / sqrt(var_a + var_b), the variances of the block means measured
+// from the samples, with Sidak's correction over all blocks, channels and pairs (at the level
+// render_moments.h sets: 1% for the whole render label).
+// A negative control proves the comparison has the power to see a small bias: the same test
+// against one image scaled by 1.05 must reject, broadly (see expect_agreement). A missing cosine
+// or a light pdf off by a factor is a far larger error than 5%.
+//
+// Whitted ray tracing leaves out indirect diffuse light and caustics, so it is compared where
+// those are zero: direct light only (path with max_depth = 1), and a scene whose only path
+// through a mirror ends in direct light.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "candela/render/renderer.h"
+#include "support/render_moments.h"
+#include "support/test_scenes.h"
+
+namespace candela {
+namespace {
+
+constexpr int kSize = 32;
+constexpr int kBlock = 4;
+
+// `s` rendered by `type` with spp samples per pixel (the noisier estimators get more).
+Scene with_integrator(Scene s, IntegratorType type, bool mis, int spp) {
+    s.integrator.type = type;
+    s.integrator.mis = mis;
+    s.sampler.spp = spp;
+    return s;
+}
+
+struct Named {
+    std::string name;
+    test::RenderMoments moments;
+};
+
+// Renders the scene with each estimator, a different seed each so the renders are independent.
+std::vector<Named> render_estimators(const Scene& base, const std::vector<std::pair<std::string, Scene>>& variants) {
+    std::vector<Named> out;
+    uint64_t seed = base.sampler.seed;
+    for (const auto& [name, scene] : variants) {
+        Scene s = scene;
+        s.sampler.seed = seed++;
+        out.push_back({name, test::render_moments(s)});
+        EXPECT_EQ(out.back().moments.dropped, 0u) << name;
+    }
+    return out;
+}
+
+// Compares every pair at once (one Sidak family). Then the negative control: each pair again, with
+// the second render scaled by 1.05, must reject, and not only where the light itself is seen (an
+// exact, noiseless value) but in at least a quarter of the lit blocks and channels.
+void expect_agreement(const std::vector<Named>& renders, const std::string& scene_name) {
+    const long pairs = long(renders.size() * (renders.size() - 1) / 2);
+    const long tests = pairs * 3 * long(kSize / kBlock) * long(kSize / kBlock);
+    const double z_critical = test::sidak_critical_z(test::kRenderTestAlpha, tests);
+    bool all_passed = true;
+    for (size_t i = 0; i < renders.size(); ++i) {
+        for (size_t j = i + 1; j < renders.size(); ++j) {
+            const test::RenderMoments &a = renders[i].moments, &b = renders[j].moments;
+            const std::string pair_name = renders[i].name + " vs " + renders[j].name;
+            test::ZTestFamily pair(z_critical);
+            test::compare_renders(a, b, kBlock, pair);
+            EXPECT_TRUE(pair.passed()) << pair_name << ": " << pair.summary();
+            all_passed = all_passed && pair.passed();
+
+            test::ZTestFamily control(z_critical);
+            test::compare_renders(a, b, kBlock, control, 1.05);
+            EXPECT_GE(control.rejected(), test::lit_blocks(b, kBlock) / 4)
+                << pair_name << " x 1.05 should differ: " << control.summary();
+        }
+    }
+    if (all_passed) return;
+    for (const Named& r : renders) test::write_diagnostic(r.moments, scene_name + "_" + r.name);
+}
+
+bool bit_identical(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Rgb)) == 0;
+}
+
+// The harness measures the renderer itself: its means are render()'s image, bit for bit.
+TEST(RenderMoments, MeanIsTheRenderersImage) {
+    Scene scene = test::cornell_glass_scene(20, 12, 4);
+    scene.film.filter = FilterType::kTent;
+    test::RenderMoments m = test::render_moments(scene);
+    RenderResult r = render(scene, {.threads = 2});
+    EXPECT_TRUE(bit_identical(m.image(), r.image));
+    EXPECT_EQ(m.dropped, r.stats.dropped_samples);
+}
+
+TEST(EstimatorAgreement, PathNeeAndBsdfAgreeOnCornellBox) {
+    Scene base = test::cornell_box_scene(kSize, kSize, 1024);
+    expect_agreement(render_estimators(base, {{"path", with_integrator(base, IntegratorType::kPath, true, 2048)},
+                                              {"nee", with_integrator(base, IntegratorType::kPath, false, 2048)},
+                                              {"bsdf", with_integrator(base, IntegratorType::kBsdf, true, 8192)}}),
+                     "cornell");
+}
+
+TEST(EstimatorAgreement, PathNeeAndBsdfAgreeOnGlassAndMirrorSpheres) {
+    // Caustics through the glass ball are found by BSDF sampling alone in all three: more samples.
+    Scene base = test::cornell_glass_scene(kSize, kSize, 1024);
+    expect_agreement(render_estimators(base, {{"path", with_integrator(base, IntegratorType::kPath, true, 4096)},
+                                              {"nee", with_integrator(base, IntegratorType::kPath, false, 4096)},
+                                              {"bsdf", with_integrator(base, IntegratorType::kBsdf, true, 16384)}}),
+                     "glass");
+}
+
+// On a diffuse scene Whitted computes direct light: path tracing cut after one bounce.
+TEST(EstimatorAgreement, WhittedMatchesDirectLightingPath) {
+    Scene base = test::cornell_box_scene(kSize, kSize, 256);
+    Scene direct = with_integrator(base, IntegratorType::kPath, true, 512);
+    direct.integrator.max_depth = 1;
+    expect_agreement(render_estimators(base, {{"path_depth1", direct},
+                                              {"whitted", with_integrator(base, IntegratorType::kWhitted, true, 512)}}),
+                     "direct");
+}
+
+// A diffuse ball under a one-sided light, seen directly and in a mirror overhead. Whitted and the
+// full path tracer agree because the scene has no light that Whitted leaves out: the ball is convex
+// and the mirror lies outside its orthogonal projection onto the mirror's plane, so the ball cannot
+// see itself in the mirror (no indirect diffuse light); the mirror lies behind the light's plane,
+// so no light reaches the ball through it (no caustic); everything else is open sky.
+Scene mirror_scene(int spp) {
+    Scene s;
+    s.materials = {make_diffuse(Rgb(0.7f, 0.5f, 0.3f)), make_mirror(Rgb(0.9f)), make_diffuse(Rgb(0.0f))};
+    s.material_names = {"ball", "mirror", "black"};
+    test::add_sphere(s, {0, 0, 0}, 1.0, 0);
+    uint32_t light = test::add_quad(s, {-1, 2, -1}, {2, 0, 0}, {0, 0, 2}, 2);  // y = 2, faces -y
+    test::set_emission(s, light, Rgb(5.0f));
+    test::add_quad(s, {1.2f, 2.5f, -2}, {2.8f, 0, 0}, {0, 0, 4}, 1);  // y = 2.5, x in [1.2, 4], faces -y
+    // The ball below, the light in the middle, the ball's lit top in the mirror above.
+    s.camera.position = {4, 0.5f, 0};
+    s.camera.look_at = {0, 2, 0};
+    s.camera.fov_degrees = 80;
+    s.camera.width = kSize;
+    s.camera.height = kSize;
+    s.sampler.spp = spp;
+    s.sampler.seed = 3;
+    return s;
+}
+
+TEST(EstimatorAgreement, WhittedMatchesPathThroughMirror) {
+    Scene base = mirror_scene(4096);
+    expect_agreement(render_estimators(base, {{"path", with_integrator(base, IntegratorType::kPath, true, 4096)},
+                                              {"whitted", with_integrator(base, IntegratorType::kWhitted, true, 4096)}}),
+                     "mirror");
+}
+
+}  // namespace
+}  // namespace candela
