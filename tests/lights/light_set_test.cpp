@@ -144,8 +144,10 @@ TEST(LightSet, PointsOnAnInwardEmittingSphereSeeItsWholeRadiance) {
     // surface. Area sampling from a point on a sphere has cos_ref = cos_light = d / 2r, so every
     // sample estimates the irradiance L cos_ref / pdf = pi L exactly (no variance): a sample that
     // takes the cone from outside (black radiance) or a wrong density shows at once.
-    for (const Sphere& sphere : {Sphere{Vec3d(0.0, 0.0, 0.0), 1.0, true}, Sphere{Vec3d(50.0, 681.33, 81.6), 600.0, true},
-                                 Sphere{Vec3d(1000.0, -20.0, 3.0), 1.0, true}}) {
+    const Sphere spheres[] = {{Vec3d(0.0, 0.0, 0.0), 1.0, true},
+                              {Vec3d(50.0, 681.33, 81.6), 600.0, true},
+                              {Vec3d(1000.0, -20.0, 3.0), 1.0, true}};
+    for (const Sphere& sphere : spheres) {
         LightTestScene scene;
         scene.add_sphere(sphere, Rgb(2.0f));
         LightSet lights = scene.light_set();
@@ -242,8 +244,10 @@ TEST(LightSet, PdfEqualsTheSampledPdfExactly) {
     for (size_t k = 0; k < scenes.size(); ++k) {
         LightSet lights = scenes[k].light_set();
         for (int i = 0; i < 500; ++i) {
-            Vec3f ref = k == 4 ? Vec3f(2.0f + 90.0f * rng.next_float(), 80.0f * rng.next_float(), 160.0f * rng.next_float())
-                               : Vec3f(rng.next_float() - 0.5f, rng.next_float() - 0.5f, rng.next_float() - 0.5f);
+            // In the unit cube around the origin; for the wall, in smallpt's box.
+            Vec3f ref;
+            for (int axis = 0; axis < 3; ++axis) ref[axis] = rng.next_float() - 0.5f;
+            if (k == 4) ref = Vec3f(50.0f, 40.0f, 80.0f) + ref * 80.0f;
             float uc = rng.next_float();
             Vec2f u = rng.next_vec2f();
             std::optional<LightSample> s = lights.sample(ref, uc, u);

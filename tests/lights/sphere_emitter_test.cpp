@@ -67,8 +67,11 @@ TEST(SphereEmitter, SmallptSizedSpheresKeepPrecision) {
 TEST(SphereEmitter, PointsOnTheSphereSampleByArea) {
     // Float points on the sphere lie on either side of it; within rounding they sample by area
     // (the cone from just outside would show only the outside). Clearly outside, the cone.
-    for (const Sphere& sphere : {Sphere{Vec3d(0.0, 0.0, 0.0), 1.0, true}, Sphere{Vec3d(50.0, 681.33, 81.6), 600.0, false},
-                                 Sphere{Vec3d(1000.0, -20.0, 3.0), 1.0, true}, Sphere{Vec3d(1e5 + 1.0, 40.8, 81.6), 1e5, false}}) {
+    const Sphere spheres[] = {{Vec3d(0.0, 0.0, 0.0), 1.0, true},
+                              {Vec3d(50.0, 681.33, 81.6), 600.0, false},
+                              {Vec3d(1000.0, -20.0, 3.0), 1.0, true},
+                              {Vec3d(1e5 + 1.0, 40.8, 81.6), 1e5, false}};
+    for (const Sphere& sphere : spheres) {
         SphereEmitter e{sphere};
         Rng rng(8, 8);
         int outside = 0;
@@ -114,7 +117,8 @@ TEST(SphereEmitter, NarrowConePdfAvoidsCancellation) {
         // u: sin^2 theta = u sin^2 theta_max to first order.
         EXPECT_LE(s->p.z, 1e4f);
         EXPECT_GE(s->p.z, 9999.0f);
-        double sin2 = (sqr(static_cast<double>(s->p.x)) + sqr(static_cast<double>(s->p.y))) / length_squared(Vec3d(s->p));
+        Vec3d p(s->p);
+        double sin2 = (p.x * p.x + p.y * p.y) / length_squared(p);
         EXPECT_NEAR(sin2 / s2, static_cast<double>(ux), 1e-4);
     }
 }

@@ -96,7 +96,7 @@ TEST(RenderMoments, MeanIsTheRenderersImage) {
 }
 
 TEST(EstimatorAgreement, PathNeeAndBsdfAgreeOnCornellBox) {
-    Scene base = test::cornell_box_scene(kSize, kSize, 1024);
+    Scene base = test::cornell_box_scene(kSize, kSize, /*spp=*/1);  // each estimator sets its own
     expect_agreement(render_estimators(base, {{"path", with_integrator(base, IntegratorType::kPath, true, 2048)},
                                               {"nee", with_integrator(base, IntegratorType::kPath, false, 2048)},
                                               {"bsdf", with_integrator(base, IntegratorType::kBsdf, true, 8192)}}),
@@ -105,7 +105,7 @@ TEST(EstimatorAgreement, PathNeeAndBsdfAgreeOnCornellBox) {
 
 TEST(EstimatorAgreement, PathNeeAndBsdfAgreeOnGlassAndMirrorSpheres) {
     // Caustics through the glass ball are found by BSDF sampling alone in all three: more samples.
-    Scene base = test::cornell_glass_scene(kSize, kSize, 1024);
+    Scene base = test::cornell_glass_scene(kSize, kSize, /*spp=*/1);
     expect_agreement(render_estimators(base, {{"path", with_integrator(base, IntegratorType::kPath, true, 4096)},
                                               {"nee", with_integrator(base, IntegratorType::kPath, false, 4096)},
                                               {"bsdf", with_integrator(base, IntegratorType::kBsdf, true, 16384)}}),
@@ -114,7 +114,7 @@ TEST(EstimatorAgreement, PathNeeAndBsdfAgreeOnGlassAndMirrorSpheres) {
 
 // On a diffuse scene Whitted computes direct light: path tracing cut after one bounce.
 TEST(EstimatorAgreement, WhittedMatchesDirectLightingPath) {
-    Scene base = test::cornell_box_scene(kSize, kSize, 256);
+    Scene base = test::cornell_box_scene(kSize, kSize, /*spp=*/1);
     Scene direct = with_integrator(base, IntegratorType::kPath, true, 512);
     direct.integrator.max_depth = 1;
     expect_agreement(render_estimators(base, {{"path_depth1", direct},
@@ -127,7 +127,7 @@ TEST(EstimatorAgreement, WhittedMatchesDirectLightingPath) {
 // and the mirror lies outside its orthogonal projection onto the mirror's plane, so the ball cannot
 // see itself in the mirror (no indirect diffuse light); the mirror lies behind the light's plane,
 // so no light reaches the ball through it (no caustic); everything else is open sky.
-Scene mirror_scene(int spp) {
+Scene mirror_scene() {
     Scene s;
     s.materials = {make_diffuse(Rgb(0.7f, 0.5f, 0.3f)), make_mirror(Rgb(0.9f)), make_diffuse(Rgb(0.0f))};
     s.material_names = {"ball", "mirror", "black"};
@@ -141,15 +141,15 @@ Scene mirror_scene(int spp) {
     s.camera.fov_degrees = 80;
     s.camera.width = kSize;
     s.camera.height = kSize;
-    s.sampler.spp = spp;
     s.sampler.seed = 3;
     return s;
 }
 
 TEST(EstimatorAgreement, WhittedMatchesPathThroughMirror) {
-    Scene base = mirror_scene(4096);
+    Scene base = mirror_scene();
     expect_agreement(render_estimators(base, {{"path", with_integrator(base, IntegratorType::kPath, true, 4096)},
-                                              {"whitted", with_integrator(base, IntegratorType::kWhitted, true, 4096)}}),
+                                              {"whitted", with_integrator(base, IntegratorType::kWhitted, true,
+                                                                          4096)}}),
                      "mirror");
 }
 

@@ -1,7 +1,7 @@
 // Direct light against a closed form (DESIGN.md, "Correctness"): the irradiance a uniform polygonal
 // light puts on a plane, by Lambert's formula for polygons (Arvo 1995, "Applications of Irradiance
-// Tensors to the Simulation of Non-Lambertian Phenomena", eq. 9; the classic differential area to
-// polygon form factor): E(p) = (L / 2) sum_i theta_i (n . gamma_i), theta_i the angle the polygon's
+// Tensors to the Simulation of Non-Lambertian Phenomena", section 3; the classic differential
+// area to polygon form factor): E(p) = (L / 2) sum_i theta_i (n . gamma_i), theta_i the angle the polygon's
 // edge i subtends at p and gamma_i the unit normal of the plane through p and that edge. A diffuse
 // plane of albedo rho then leaves radiance rho E / pi. With max_depth = 1 (direct light only) every
 // estimator renders exactly that, so each pixel's expectation is the closed form averaged over the
@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <ostream>
 #include <string>
@@ -40,7 +39,8 @@ double polygon_irradiance(const Vec3d& p, const Vec3d& n, const Polygon& polygon
 TEST(PolygonIrradiance, MatchesRectangleCornerFormFactor) {
     // The point under one corner of an a x b rectangle parallel to it at height c: the form factor
     // F = (1/2pi) [A/sqrt(1+A^2) atan(B/sqrt(1+A^2)) + B/sqrt(1+B^2) atan(A/sqrt(1+B^2))],
-    // A = a/c, B = b/c (Howell's catalogue, case B-3), and E = pi L F.
+    // A = a/c, B = b/c (Howell's catalogue of configuration factors: a differential element to a
+    // parallel rectangle, its normal through a corner), and E = pi L F.
     const double a = 0.7, b = 1.9, c = 0.6, L = 3.0;
     const double A = a / c, B = b / c;
     const double F = (A / std::sqrt(1 + A * A) * std::atan(B / std::sqrt(1 + A * A)) +
@@ -197,9 +197,9 @@ class QuadLightIrradiance : public ::testing::TestWithParam<EstimatorCase> {
         ASSERT_GT(std::count(e.valid.begin(), e.valid.end(), true), kSize * kSize / 4);
         test::ZTestFamily family = test_against(m, e, 1.0);
         EXPECT_TRUE(family.passed()) << family.summary();
-        // Power: the same test rejects an answer 5% too bright.
+        // Power: the same test rejects an answer 5% too bright, in at least a quarter of the blocks.
         test::ZTestFamily wrong = test_against(m, e, 1.05);
-        EXPECT_FALSE(wrong.passed()) << wrong.summary();
+        EXPECT_GE(wrong.rejected(), wrong.tests() / 4) << wrong.summary();
         if (!family.passed()) test::write_diagnostic(m, "analytic_" + name + "_" + GetParam().name);
     }
 };
@@ -216,7 +216,12 @@ TEST_P(QuadLightIrradiance, FloorThroughOriginUnderOneSidedLightMatchesClosedFor
     check({0.0f, 1.0f, 1.0f, false, {0, 0.8f, -1.4f}, {0, 0, 0}}, "origin_floor");
 }
 
-// A two-sided light lights the ceiling above it, facing down, by the same formula.
+// A two-sided light lights both sides by the same formula: the floor below it, and the ceiling
+// above it facing down.
+TEST_P(QuadLightIrradiance, FloorUnderTwoSidedLightMatchesClosedForm) {
+    check({-0.5f, 1.0f, 0.5f, true, {0, 0.3f, -1.4f}, {0, -0.5f, 0}}, "two_sided_floor");
+}
+
 TEST_P(QuadLightIrradiance, CeilingOverTwoSidedLightMatchesClosedForm) {
     check({2.0f, -1.0f, 1.0f, true, {0, 1.2f, -1.4f}, {0, 2, 0}}, "ceiling");
 }

@@ -1,9 +1,9 @@
-// The white furnace (DESIGN.md, "Correctness"): a camera inside a closed sphere (or cube, six quad
-// lights) whose inside emits radiance Le and reflects diffusely with albedo a. Every point sees the same radiance L, and
-// L = Le + a L (the sphere's walls see only the sphere), so L = Le / (1 - a) in every pixel,
-// whatever the camera's position inside. Any estimator that loses or double-counts energy at some
-// bounce (a wrong light pdf, MIS weights not summing to 1, a wrong Russian roulette weight, a
-// missing cosine) moves this value.
+// The white furnace (DESIGN.md, "Correctness"): a camera inside a closed sphere (or a cube of six
+// quad lights) whose inside emits radiance Le and reflects diffusely with albedo a. Every point
+// sees the same radiance L, and L = Le + a L (the walls see only the walls), so L = Le / (1 - a)
+// in every pixel, whatever the camera's position inside. Any estimator that loses or
+// double-counts energy at some bounce (a wrong light pdf, MIS weights not summing to 1, a wrong
+// Russian roulette weight, a missing cosine) moves this value.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,8 +40,10 @@ Scene furnace_scene(const FurnaceCase& c) {
         test::add_sphere(s, {0, 0, 0}, 1.0, 0, /*reverse_orientation=*/true);
     } else {
         // The cube [-1, 1]^3, every face facing in: six lights for next-event estimation to pick.
-        // (Not with NEE alone: near an edge, area sampling the adjacent face gives contributions
-        // growing as 1 / distance^2 whose variance is infinite, so no z-test would be valid.)
+        // Not with NEE alone: near an edge, area sampling the adjacent face gives contributions
+        // growing as 1 / distance^2 whose variance is infinite, so no z-test would be valid. Nor
+        // with BSDF sampling alone, whose furnace estimate (emission 1 at every bounce) does not
+        // depend on the geometry at all: the sphere cases test it.
         test::add_quad(s, {-1, -1, -1}, {0, 0, 2}, {2, 0, 0});  // y = -1, +y
         test::add_quad(s, {-1, 1, -1}, {2, 0, 0}, {0, 0, 2});   // y = 1, -y
         test::add_quad(s, {-1, -1, 1}, {0, 2, 0}, {2, 0, 0});   // z = 1, -z
@@ -121,9 +123,7 @@ INSTANTIATE_TEST_SUITE_P(
                       FurnaceCase{"sphere_bsdf_a05_rr08", Enclosure::kSphere, IntegratorType::kBsdf, true, 0.5f, 0.8f},
                       FurnaceCase{"sphere_bsdf_a08_rr08", Enclosure::kSphere, IntegratorType::kBsdf, true, 0.8f, 0.8f},
                       FurnaceCase{"cube_path_a08", Enclosure::kCube, IntegratorType::kPath, true, 0.8f, 0.0f},
-                      FurnaceCase{"cube_path_a05_rr08", Enclosure::kCube, IntegratorType::kPath, true, 0.5f, 0.8f},
-                      FurnaceCase{"cube_bsdf_a08", Enclosure::kCube, IntegratorType::kBsdf, true, 0.8f, 0.0f},
-                      FurnaceCase{"cube_bsdf_a05_rr08", Enclosure::kCube, IntegratorType::kBsdf, true, 0.5f, 0.8f}),
+                      FurnaceCase{"cube_path_a05_rr08", Enclosure::kCube, IntegratorType::kPath, true, 0.5f, 0.8f}),
     [](const auto& param_info) { return param_info.param.name; });
 
 }  // namespace

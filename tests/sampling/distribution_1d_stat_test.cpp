@@ -79,7 +79,8 @@ TEST(Distribution1DChi2, ContinuousSamplesMatchDensity) {
         return Vec2f(d.sample_continuous(u).x, y);
     };
     auto pdf = [&](Vec2f p) {
-        return binned_density(p.x, d.size(), [&](size_t i) { return d.pdf_continuous((static_cast<float>(i) + 0.5f) / 32.0f); });
+        auto bin_density = [&](size_t i) { return d.pdf_continuous((static_cast<float>(i) + 0.5f) / 32.0f); };
+        return binned_density(p.x, d.size(), bin_density);
     };
     Chi2Result r = chi2_test(PlanarDomain{}, sampler, pdf, opt);
     EXPECT_TRUE(r.passed) << r.message;

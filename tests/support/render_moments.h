@@ -166,7 +166,8 @@ class ZTestFamily {
     // variance with a nonzero difference rejects (both estimates are exact and disagree).
     void add(double difference, double variance, int x, int y, int c) {
         ++tests_;
-        double z = variance > 0.0 ? difference / std::sqrt(variance) : (difference == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
+        constexpr double kInf = std::numeric_limits<double>::infinity();
+        double z = variance > 0.0 ? difference / std::sqrt(variance) : (difference == 0.0 ? 0.0 : kInf);
         if (!(std::abs(z) <= z_critical_)) ++rejected_;
         if (std::abs(z) <= std::abs(worst_z_)) return;  // NaN counts as worse than anything
         worst_z_ = z;

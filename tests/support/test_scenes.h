@@ -43,7 +43,6 @@ inline Scene small_box_scene(int width, int height, int spp) {
     return s;
 }
 
-
 // Makes shape `shape` a diffuse area light of radiance `emission`.
 inline void set_emission(Scene& scene, uint32_t shape, Rgb emission, bool two_sided = false) {
     scene.shapes[shape].emission = emission;
@@ -71,8 +70,8 @@ inline constexpr uint32_t kCornellWhite = 0, kCornellRed = 1, kCornellGreen = 2,
                           kCornellMirror = 4, kCornellGlass = 5;
 
 // The Cornell box walls in [-1, 1]^3, open towards the camera at -z, lit by a one-sided square
-// light facing down just below the ceiling (black, so it reflects nothing); no objects inside. Paths are long (max_depth 64) with
-// throughput Russian roulette after 3 bounces.
+// light facing down just below the ceiling (black, so it reflects nothing); no objects inside.
+// The integrator settings are the defaults (max_depth 64, throughput roulette after 3 bounces).
 inline Scene cornell_walls_scene(int width, int height, int spp) {
     Scene s;
     s.materials = {make_diffuse(Rgb(0.75f, 0.73f, 0.70f)), make_diffuse(Rgb(0.63f, 0.07f, 0.05f)),

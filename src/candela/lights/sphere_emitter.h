@@ -9,7 +9,7 @@
 // rounded to float and land on either side of it. From the inside they must not use the cone:
 // seen from just outside, the visible cap is the outside, whose radiance is black for a sphere
 // that emits inwards. So the cone is used only clearly outside, beyond a band of 1e-6 of the
-// coordinates' magnitude (about 10 float roundings); area sampling is valid from anywhere, and
+// coordinates' magnitude (about 16 float roundings); area sampling is valid from anywhere, and
 // pbrt-v4 does the same by offsetting the reference point towards the centre before this test.
 //
 // The geometry runs in double: smallpt's spheres have radius 1e5 with centres 1e5 away, and the
@@ -33,7 +33,7 @@ struct SphereEmitter {
     CANDELA_HD float area() const { return static_cast<float>(4.0 * kPiD * sphere.radius * sphere.radius); }
     // A point the sphere shows to ref (u: the direction in the cone, or the point by area).
     CANDELA_HD std::optional<EmitterSample> sample(const Vec3f& ref, float uc, Vec2f u) const;
-    // The cone density if ref is outside the sphere (for any point p), else the area density
+    // The cone density if ref is clearly outside the sphere (for any point p), else the area density
     // 1 / (4 pi r^2) converted at p.
     CANDELA_HD float pdf(const Vec3f& ref, const Vec3f& p, const Vec3f& n) const;
     // 1 - cos theta_max of the cone the sphere subtends from ref; 0 (sample by area) when ref is

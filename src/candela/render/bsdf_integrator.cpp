@@ -16,13 +16,9 @@ Rgb BsdfIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& count
         if (bounces == scene_.integrator.max_depth) break;
 
         PathVertex v(scene_, *hit, ray);
-        float uc = rng.next_float();
-        Vec2f u = rng.next_vec2f();
-        std::optional<BsdfSample> bs = v.bsdf.sample(v.wo, uc, u, TransportMode::kRadiance);
-        if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) break;
-        beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
+        std::optional<BsdfSample> bs = continue_path(v, rng, beta, ray);
+        if (!bs) break;
         if (bs->is_transmission) eta_scale *= sqr(bs->eta);
-        ray = spawn_ray(*hit, v.frame.to_world(bs->wi));
         if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, rng)) break;
     }
     return L;

@@ -67,4 +67,16 @@ inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, cons
     return f * ls->Le * (w / ls->pdf);
 }
 
+// Samples the BSDF for the path's next direction and moves the path there: beta *= f |cos| / pdf
+// and `ray` becomes the spawned ray. Returns the sample, or nullopt when the path ends here.
+inline std::optional<BsdfSample> continue_path(const PathVertex& v, Rng& rng, Rgb& beta, Ray& ray) {
+    float uc = rng.next_float();
+    Vec2f u = rng.next_vec2f();
+    std::optional<BsdfSample> bs = v.bsdf.sample(v.wo, uc, u, TransportMode::kRadiance);
+    if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) return std::nullopt;
+    beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
+    ray = spawn_ray(v.hit, v.frame.to_world(bs->wi));
+    return bs;
+}
+
 }  // namespace candela

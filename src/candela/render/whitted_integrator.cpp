@@ -17,12 +17,9 @@ Rgb WhittedIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& co
         PathVertex v(scene_, *hit, ray);
         L += beta * sample_direct_light(v, lights_, accel_, /*mis=*/false, rng, counters);
 
-        float uc = rng.next_float();
-        Vec2f u = rng.next_vec2f();
-        std::optional<BsdfSample> bs = v.bsdf.sample(v.wo, uc, u, TransportMode::kRadiance);
-        if (!bs || !bs->is_delta || bs->pdf <= 0.0f || bs->f.is_black()) break;
-        beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
-        ray = spawn_ray(*hit, v.frame.to_world(bs->wi));
+        // Only delta lobes continue the path; a non-delta choice ends it (its light is counted).
+        std::optional<BsdfSample> bs = continue_path(v, rng, beta, ray);
+        if (!bs || !bs->is_delta) break;
     }
     return L;
 }
