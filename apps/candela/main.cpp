@@ -97,6 +97,7 @@ int run_render(const RenderArgs& a) {
     if (a.threads && *a.threads < 0) bad_flag(fmt::format("--threads: expected an integer >= 0, got {}", *a.threads));
 
     Scene scene = load_scene(a.scene);
+    for (const std::string& w : scene.warnings) fmt::print(stderr, "candela: warning: {}\n", w);
     apply_overrides(a, scene);
 
     RenderOptions options;

@@ -111,6 +111,8 @@ const BadScene kBadScenes[] = {
      "unknown material \"whte\"; defined materials: red, white"},
     {"unknown_fresnel.json", 3, 60, "/materials/glass/fresnel",
      "unknown fresnel \"shlick\"; expected one of: exact, schlick"},
+    {"unknown_environment_sampling.json", 3, 53, "/lights/0/sampling",
+     "unknown environment sampling \"cosine\"; expected one of: importance, uniform"},
     {"unknown_filter.json", 2, 22, "/film/filter",
      "unknown filter \"gausian\"; expected one of: box, gaussian, smallpt, tent"},
     {"unknown_integrator_type.json", 2, 26, "/integrator/type",

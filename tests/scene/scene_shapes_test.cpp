@@ -413,6 +413,30 @@ TEST(SceneLoaderLights, EnvironmentTransformRotatesIt) {
     EXPECT_NEAR(x.z, -1.0, 1e-12);
 }
 
+TEST(SceneLoaderLights, EnvironmentSamplingIsImportanceUnlessUniformIsAsked) {
+    Scene by_default = load_json(R"({"lights": [{"type": "environment", "color": 1}]})");
+    EXPECT_EQ(by_default.environment->sampling, EnvironmentSampling::kImportance);
+    Scene importance = load_json(
+        R"({"lights": [{"type": "environment", "color": 1, "sampling": "importance"}]})");
+    EXPECT_EQ(importance.environment->sampling, EnvironmentSampling::kImportance);
+    Scene uniform = load_json(
+        R"({"lights": [{"type": "environment", "color": 1, "sampling": "uniform"}]})");
+    EXPECT_EQ(uniform.environment->sampling, EnvironmentSampling::kUniform);
+}
+
+TEST(SceneLoaderLights, EnvironmentImageNotTwoToOneLoadsWithAWarning) {
+    Scene s = load_json(R"({"lights": [{"type": "environment", "file": "sky_3x2.hdr"}]})");
+    ASSERT_TRUE(s.environment);
+    EXPECT_EQ(s.environment->radiance.width, 3);
+    EXPECT_EQ(s.environment->radiance.height, 2);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    const std::string& w = s.warnings[0];
+    EXPECT_NE(w.find("/lights/0/file: environment image \"sky_3x2.hdr\" is 3x2, not 2:1"),
+              std::string::npos) << w;
+    Scene two_to_one = load_json(R"({"lights": [{"type": "environment", "file": "sky_2x1.hdr"}]})");
+    EXPECT_TRUE(two_to_one.warnings.empty());
+}
+
 TEST(SceneLoaderLights, ImageErrorKeepsItsFileAndNamesTheLight) {
     try {
         load_json(R"({"lights": [{"type": "environment", "file": "truncated.hdr"}]})");

@@ -31,6 +31,7 @@
 #include "candela/image/image_io.h"
 #include "candela/lights/light_set.h"
 #include "candela/render/integrator.h"
+#include "candela/render/renderer.h"
 #include "candela/sampling/rng.h"
 #include "candela/scene/scene.h"
 #include "support/chi2.h"
@@ -66,7 +67,7 @@ struct RenderMoments {
 // Renders `scene` as render() does, keeping per-pixel sums of samples and of their squares.
 inline RenderMoments render_moments(const Scene& scene) {
     Accelerator accel(scene.meshes, scene.spheres, scene.shapes);
-    LightSet lights(scene.meshes, scene.spheres, scene.shapes, scene.integrator.light_selection);
+    LightSet lights = build_light_set(scene, accel);  // as render() builds them
     PerspectiveCamera camera(scene.camera);
     std::unique_ptr<Integrator> integrator = make_integrator(scene, accel, lights);
 

@@ -19,6 +19,7 @@
 #include "candela/geometry/sphere.h"
 #include "candela/geometry/triangle_mesh.h"
 #include "candela/lights/area_light.h"
+#include "candela/lights/environment_light.h"
 #include "candela/lights/light_sample.h"
 #include "candela/lights/light_selection.h"
 #include "candela/sampling/distribution_1d.h"
@@ -28,12 +29,22 @@ namespace candela {
 class LightSet {
   public:
     LightSet() = default;
-    // The spans must outlive the set. Shapes with black emission are not lights.
+    // The spans must outlive the set. Shapes with black emission are not lights. The environment,
+    // if any, competes for selection with the area lights, by its power estimate for a scene of
+    // bounding-sphere radius `scene_radius` (EnvironmentLight::power).
     LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres, std::span<const Shape> shapes,
-             LightSelection selection = LightSelection::kPower);
+             LightSelection selection = LightSelection::kPower,
+             std::optional<EnvironmentLight> environment = std::nullopt, float scene_radius = 1.0f);
 
-    CANDELA_HD bool empty() const { return lights_.empty(); }
-    CANDELA_HD size_t size() const { return lights_.size(); }
+    CANDELA_HD bool empty() const { return lights_.empty() && !environment_; }
+    CANDELA_HD size_t size() const { return lights_.size() + (environment_ ? 1 : 0); }
+    CANDELA_HD bool has_environment() const { return environment_.has_value(); }
+
+    // Radiance arriving from world direction w (unit) from the environment; black without one.
+    Rgb environment_radiance(const Vec3f& w) const;
+    // The pdf per solid angle (selection included) with which sample() produces direction w
+    // towards the environment; 0 without one.
+    float environment_pdf(const Vec3f& w) const;
 
     // Samples a light (with uc) and a point on it (with u) as seen from `ref`.
     // nullopt when nothing can be sampled (no lights, or a zero pdf). A point on the back of a
@@ -63,7 +74,8 @@ class LightSet {
 
     std::vector<AreaLight> lights_;
     std::vector<uint32_t> light_of_shape_;  // shape id -> index in lights_, or kNoLight
-    Distribution1D selection_;              // over lights_, by power or uniform
+    std::optional<EnvironmentLight> environment_;
+    Distribution1D selection_;              // over lights_, then the environment (last index)
 };
 
 }  // namespace candela

@@ -57,12 +57,13 @@ inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, cons
     if (v.bsdf.is_delta_only() || lights.empty()) return Rgb(0.0f);
     std::optional<LightSample> ls = lights.sample(v.hit.p, uc, u);
     if (!ls || ls->pdf <= 0.0f || ls->Le.is_black()) return Rgb(0.0f);
-    Vec3f wi_world = normalize(ls->p - v.hit.p);
-    Vec3f wi = v.frame.to_local(wi_world);
+    Vec3f wi = v.frame.to_local(ls->wi);
     Rgb f = v.bsdf.eval(v.wo, wi, TransportMode::kRadiance) * std::abs(wi.z);
     if (f.is_black()) return Rgb(0.0f);
     ++counters.shadow;
-    if (accel.occluded(spawn_ray_to(v.hit, ls->p))) return Rgb(0.0f);
+    // Towards the environment the shadow ray runs to infinity; towards a surface it stops short.
+    Ray shadow = ls->infinite ? spawn_ray(v.hit, ls->wi) : spawn_ray_to(v.hit, ls->p);
+    if (accel.occluded(shadow)) return Rgb(0.0f);
     float w = mis ? power_heuristic(ls->pdf, v.bsdf.pdf(v.wo, wi)) : 1.0f;
     return f * ls->Le * (w / ls->pdf);
 }

@@ -3,7 +3,7 @@
 
 namespace candela {
 
-// pbrt-v4's PathIntegrator::Li, without environment lights (yet). At each vertex: emission found
+// pbrt-v4's PathIntegrator::Li. At each vertex: emission found
 // by the BSDF-sampled ray (MIS-weighted against having sampled the light), then one light sample
 // (MIS-weighted against having sampled the BSDF), then the next direction by BSDF sampling.
 Rgb PathIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& counters) const {
@@ -16,7 +16,15 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& count
     for (int bounces = 0;; ++bounces) {
         ++(bounces == 0 ? counters.camera : counters.bounce);
         std::optional<SurfaceHit> hit = accel_.intersect(ray);
-        if (!hit) break;
+        if (!hit) {
+            // The ray escapes to the environment: the same MIS rule as for hitting an emitter.
+            Rgb Le = lights_.environment_radiance(ray.d);
+            if (bounces == 0 || after_delta)
+                L += beta * Le;
+            else if (scene_.integrator.mis)
+                L += beta * Le * power_heuristic(prev_bsdf_pdf, lights_.environment_pdf(ray.d));
+            break;
+        }
 
         Rgb Le = lights_.emitted(hit->shape_id, hit->ng, -ray.d);
         if (!Le.is_black()) {

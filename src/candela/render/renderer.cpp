@@ -47,12 +47,23 @@ struct ThreadTally {
 
 }  // namespace
 
+LightSet build_light_set(const Scene& scene, const Accelerator& accel) {
+    std::optional<EnvironmentLight> environment;
+    if (const auto& env = scene.environment)
+        environment.emplace(env->radiance, env->scale, env->to_world, env->sampling);
+    // The environment's power estimate needs the scene's size: its bounding sphere.
+    Bounds3f bounds = accel.bounds();
+    float scene_radius = bounds.empty() ? 1.0f : std::max(0.5f * length(bounds.diagonal()), 1e-6f);
+    return LightSet(scene.meshes, scene.spheres, scene.shapes, scene.integrator.light_selection,
+                    std::move(environment), scene_radius);
+}
+
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     RenderResult result;
     Clock::time_point build_start = Clock::now();
     Accelerator accel(scene.meshes, scene.spheres, scene.shapes);
 
-    LightSet lights(scene.meshes, scene.spheres, scene.shapes, scene.integrator.light_selection);
+    LightSet lights = build_light_set(scene, accel);
     result.stats.build_seconds = seconds_since(build_start);
 
     PerspectiveCamera camera(scene.camera);

@@ -9,6 +9,8 @@
 namespace candela {
 
 struct Scene;
+class Accelerator;
+class LightSet;
 
 struct RenderOptions {
     int threads = 0;        // 0: all cores
@@ -29,6 +31,10 @@ struct RenderResult {
     Image image;
     RenderStats stats;
 };
+
+// The scene's lights: its emitting shapes and its environment, selected as the integrator settings
+// say. `accel` (built over the same scene) gives the scene's size for the environment's power.
+LightSet build_light_set(const Scene& scene, const Accelerator& accel);
 
 // Renders scene.sampler.spp samples per pixel. The image depends only on the scene (incl. its
 // seed), not on threads or tile_size.

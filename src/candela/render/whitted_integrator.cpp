@@ -9,7 +9,10 @@ Rgb WhittedIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& co
     for (int bounces = 0;; ++bounces) {
         ++(bounces == 0 ? counters.camera : counters.bounce);
         std::optional<SurfaceHit> hit = accel_.intersect(ray);
-        if (!hit) break;
+        if (!hit) {
+            L += beta * lights_.environment_radiance(ray.d);
+            break;
+        }
         // Seen directly or through delta bounces only (the loop ends at any other bounce).
         L += beta * lights_.emitted(hit->shape_id, hit->ng, -ray.d);
         if (bounces == scene_.integrator.max_depth) break;

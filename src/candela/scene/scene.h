@@ -13,6 +13,7 @@
 #include "candela/geometry/sphere.h"
 #include "candela/geometry/triangle_mesh.h"
 #include "candela/image/image.h"
+#include "candela/lights/environment_light.h"
 #include "candela/materials/material.h"
 #include "candela/math/rgb.h"
 #include "candela/math/transform.h"
@@ -25,6 +26,7 @@ struct EnvironmentSettings {
     Image radiance;
     float scale = 1.0f;
     Transform to_world;  // rotates the light's frame into the world
+    EnvironmentSampling sampling = EnvironmentSampling::kImportance;
 };
 
 struct Scene {
@@ -41,6 +43,9 @@ struct Scene {
     std::vector<Sphere> spheres;
     std::vector<Shape> shapes;
     std::optional<EnvironmentSettings> environment;
+    // Problems that do not stop loading (e.g. an environment map that is not 2:1), one line each,
+    // already located ("file: message"); the CLI prints them as warnings.
+    std::vector<std::string> warnings;
 };
 
 }  // namespace candela

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <string>
+#include <vector>
 
 #include "candela/image/image_io.h"
 #include "candela/scene/scene_sections.h"
@@ -14,8 +16,10 @@ namespace candela {
 namespace {
 
 constexpr std::array<std::string_view, 1> kLightTypes = {"environment"};
+constexpr std::array<std::string_view, 2> kEnvironmentSamplingNames = {"importance", "uniform"};
 
-Image read_environment_image(const JsonCursor& file, const std::filesystem::path& folder) {
+Image read_environment_image(const JsonCursor& file, const std::filesystem::path& folder,
+                             std::vector<std::string>& warnings) {
     std::string extension = std::filesystem::path(file.string()).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
@@ -26,10 +30,22 @@ Image read_environment_image(const JsonCursor& file, const std::filesystem::path
     Image image = load_referenced(file, [&] { return read_image(path); });
     if (image.width <= 0 || image.height <= 0)
         file.fail(fmt::format("environment image {} is empty", json_quoted(file.string())));
+    // Any size maps onto the sphere, but one that is not 2:1 stretches its texels (and is often
+    // not an equirectangular map at all, e.g. a cube cross): worth a word, not a failure.
+    if (image.width != 2 * image.height) {
+        SourceLocation where = file.document().locate(file.pointer());
+        warnings.push_back(SceneError(where, fmt::format("environment image {} is {}x{}, not 2:1 "
+                                                         "(width twice the height); it is stretched "
+                                                         "over the sphere as it is",
+                                                         json_quoted(file.string()), image.width,
+                                                         image.height))
+                               .formatted());
+    }
     return image;
 }
 
-EnvironmentSettings read_environment(JsonCursor c, const std::filesystem::path& folder) {
+EnvironmentSettings read_environment(JsonCursor c, const std::filesystem::path& folder,
+                                     std::vector<std::string>& warnings) {
     // Either an image or one colour: both at once would leave one silently ignored.
     bool has_file = c.has("file"), has_color = c.has("color");
     if (has_file && has_color) c.get("color")->fail("give \"file\" or \"color\", not both");
@@ -38,13 +54,18 @@ EnvironmentSettings read_environment(JsonCursor c, const std::filesystem::path& 
     EnvironmentSettings env;
     if (auto v = c.get("scale")) env.scale = v->number_f(Bounds::at_least(0));
     if (auto v = c.get("transform")) env.to_world = read_transform(*v);
+    if (auto v = c.get("sampling")) {
+        env.sampling = v->choice("environment sampling", kEnvironmentSamplingNames) == "uniform"
+                           ? EnvironmentSampling::kUniform
+                           : EnvironmentSampling::kImportance;
+    }
     std::optional<JsonCursor> file = c.get("file");
     if (!file) {
         env.radiance = Image(1, 1);
         env.radiance.at(0, 0) = c.get("color")->colour(Bounds::at_least(0));
     }
     c.reject_unknown_keys();
-    if (file) env.radiance = read_environment_image(*file, folder);
+    if (file) env.radiance = read_environment_image(*file, folder, warnings);
     return env;
 }
 
@@ -57,7 +78,7 @@ void read_lights(const JsonCursor& lights, const std::filesystem::path& folder, 
         if (scene.environment)
             c.fail(fmt::format("a scene has at most one environment light, and {} is one",
                                first_environment));
-        scene.environment = read_environment(c, folder);
+        scene.environment = read_environment(c, folder, scene.warnings);
         first_environment = c.pointer();
     }
 }

@@ -1,0 +1,138 @@
+// Environment lighting end to end. The white furnace: a sphere of albedo 1 (diffuse, glass or
+// mirror) under a constant environment of radiance 1 renders as 1 everywhere, because no energy is
+// lost or created. Agreement: importance-sampled and uniformly sampled environment light and pure
+// BSDF sampling converge to the same image of an environment-lit scene.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "candela/render/renderer.h"
+#include "support/render_moments.h"
+#include "support/test_scenes.h"
+
+namespace candela {
+namespace {
+
+// Float rounding of exactly-1 paths (f |cos| / pdf for a mirror) is noise-free but not exact.
+constexpr double kRoundingSigma = 1e-5;
+
+Image constant_map(float value) {
+    Image map(1, 1);
+    map.at(0, 0) = Rgb(value);
+    return map;
+}
+
+// A sky with a smooth gradient, darker below the horizon, and a bright "sun" of 2x2 texels.
+Image sky_map() {
+    Image map(32, 16);
+    for (int y = 0; y < map.height; ++y)
+        for (int x = 0; x < map.width; ++x)
+            map.at(x, y) = y < 8 ? Rgb(0.4f + 0.05f * float(y), 0.6f, 1.0f) * (0.5f + 0.5f * float(x) / 32.0f)
+                                 : Rgb(0.2f, 0.15f, 0.1f);
+    for (int y = 3; y < 5; ++y)
+        for (int x = 9; x < 11; ++x) map.at(x, y) = Rgb(30.0f, 27.0f, 20.0f);
+    return map;
+}
+
+Scene sphere_under_sky(Material material, Image map, int size, int spp) {
+    Scene s;
+    s.materials = {material};
+    s.material_names = {"sphere"};
+    test::add_sphere(s, {0, 0, 0}, 1.0);
+    s.camera.position = {0, 0.3f, 4};
+    s.camera.look_at = {0, 0, 0};
+    s.camera.fov_degrees = 40;
+    s.camera.width = size;
+    s.camera.height = size;
+    s.sampler.spp = spp;
+    s.sampler.seed = 3;
+    s.integrator.max_depth = 256;  // glass: internal reflections; truncation is then negligible
+    s.environment = EnvironmentSettings{std::move(map), 1.0f, Transform(), EnvironmentSampling::kImportance};
+    return s;
+}
+
+using FurnaceCase = std::tuple<std::string, IntegratorType>;
+class EnvironmentFurnace : public ::testing::TestWithParam<FurnaceCase> {};
+
+TEST_P(EnvironmentFurnace, AlbedoOneSphereRendersAsOneEverywhere) {
+    const auto& [material_name, type] = GetParam();
+    Material m = material_name == "diffuse" ? make_diffuse(Rgb(1.0f))
+                 : material_name == "glass" ? make_dielectric(1.5f)
+                                            : make_mirror(Rgb(1.0f));
+    Scene scene = sphere_under_sky(m, constant_map(1.0f), 16, 64);
+    scene.integrator.type = type;
+    test::RenderMoments r = test::render_moments(scene);
+    EXPECT_EQ(r.dropped, 0u);
+    const int block = 2;
+    const long tests = 3L * (16 / block) * (16 / block);
+    test::ZTestFamily family(test::sidak_critical_z(test::kRenderTestAlpha, tests));
+    for (int y = 0; y < 16; y += block)
+        for (int x = 0; x < 16; x += block)
+            for (int c = 0; c < 3; ++c) {
+                test::BlockEstimate e = test::block_estimate(r, x, y, block, c);
+                family.add(e.mean - 1.0, e.variance + kRoundingSigma * kRoundingSigma, x, y, c);
+            }
+    EXPECT_TRUE(family.passed()) << family.summary();
+    // The sphere fills the middle of the image, so the test covers it and not only the background:
+    // there the estimate is noisy (except for the mirror, whose single path is deterministic).
+    if (material_name != "mirror") {
+        EXPECT_GT(r.variance_of_mean(8, 8, 0), 0.0);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    MaterialsAndEstimators, EnvironmentFurnace,
+    ::testing::Combine(::testing::Values("diffuse", "glass", "mirror"),
+                       ::testing::Values(IntegratorType::kPath, IntegratorType::kBsdf)),
+    [](const auto& param_info) {
+        return std::get<0>(param_info.param) +
+               (std::get<1>(param_info.param) == IntegratorType::kPath ? "_path" : "_bsdf");
+    });
+
+TEST(EnvironmentAgreement, ImportanceUniformAndBsdfSamplingAgree) {
+    // A diffuse ball on a ground plane under the sky with a sun: shadows, sky light and sun light.
+    Scene base = sphere_under_sky(make_diffuse(Rgb(0.7f, 0.6f, 0.5f)), sky_map(), 32, 256);
+    base.materials.push_back(make_diffuse(Rgb(0.5f)));
+    test::add_quad(base, {-20, -1, 20}, {40, 0, 0}, {0, 0, -40}, 1);
+    base.camera.position = {0, 1.5f, 5};
+    struct Variant {
+        std::string name;
+        IntegratorType type;
+        EnvironmentSampling sampling;
+        int spp;
+    };
+    const std::vector<Variant> variants = {{"importance", IntegratorType::kPath, EnvironmentSampling::kImportance, 2048},
+                                           {"uniform", IntegratorType::kPath, EnvironmentSampling::kUniform, 8192},
+                                           {"bsdf", IntegratorType::kBsdf, EnvironmentSampling::kImportance, 8192}};
+    std::vector<test::RenderMoments> renders;
+    uint64_t seed = 11;
+    for (const Variant& v : variants) {
+        Scene s = base;
+        s.integrator.type = v.type;
+        s.environment->sampling = v.sampling;
+        s.sampler.spp = v.spp;
+        s.sampler.seed = seed++;
+        renders.push_back(test::render_moments(s));
+        EXPECT_EQ(renders.back().dropped, 0u) << v.name;
+    }
+    const int block = 4;
+    const long tests = 3L * 3 * (32 / block) * (32 / block);
+    const double z_critical = test::sidak_critical_z(test::kRenderTestAlpha, tests);
+    for (size_t i = 0; i < renders.size(); ++i) {
+        for (size_t j = i + 1; j < renders.size(); ++j) {
+            test::ZTestFamily pair(z_critical);
+            test::compare_renders(renders[i], renders[j], block, pair);
+            EXPECT_TRUE(pair.passed()) << variants[i].name << " vs " << variants[j].name << ": " << pair.summary();
+            // Power: the same comparison against a 5% brighter image must fail broadly.
+            test::ZTestFamily control(z_critical);
+            test::compare_renders(renders[i], renders[j], block, control, 1.05);
+            EXPECT_GE(control.rejected(), test::lit_blocks(renders[j], block) / 4)
+                << variants[i].name << " vs " << variants[j].name << " x 1.05: " << control.summary();
+        }
+    }
+}
+
+}  // namespace
+}  // namespace candela
