@@ -91,6 +91,31 @@ INSTANTIATE_TEST_SUITE_P(
                (std::get<1>(param_info.param) == IntegratorType::kPath ? "_path" : "_bsdf");
     });
 
+// Mean red value of the image's columns [x0, x1).
+double column_mean(const Image& img, int x0, int x1) {
+    double sum = 0.0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = x0; x < x1; ++x) sum += double(img.at(x, y).r);
+    return sum / double((x1 - x0) * img.height);
+}
+
+TEST(EnvironmentOrientation, SunAtQuarterULightsThePlusXSideAndRotationMovesIt) {
+    // Black map with a bright patch at u = 0.25, v = 0.5: by the convention (u = atan2(d.x, -d.z)
+    // / 2pi, v = acos(d.y) / pi) the direction +x on the horizon. The camera looks along -z, so
+    // image right is +x: the sphere's right half is lit. Rotating the light 180 degrees about +y
+    // sends the patch to -x, the left half.
+    Image map(64, 32);
+    for (int y = 15; y < 17; ++y)
+        for (int x = 15; x < 17; ++x) map.at(x, y) = Rgb(100.0f);
+    Scene scene = sphere_under_sky(make_diffuse(Rgb(0.8f)), map, 32, 32);
+    scene.camera.position = {0, 0, 4};
+    Image lit_right = render(scene, {.threads = 2}).image;
+    EXPECT_GT(column_mean(lit_right, 16, 32), 20.0 * column_mean(lit_right, 0, 16));
+    scene.environment->to_world = Transform::rotate(Vec3d(0, 1, 0), kPiD);
+    Image lit_left = render(scene, {.threads = 2}).image;
+    EXPECT_GT(column_mean(lit_left, 0, 16), 20.0 * column_mean(lit_left, 16, 32));
+}
+
 TEST(EnvironmentAgreement, ImportanceUniformAndBsdfSamplingAgree) {
     // A diffuse ball on a ground plane under the sky with a sun: shadows, sky light and sun light.
     Scene base = sphere_under_sky(make_diffuse(Rgb(0.7f, 0.6f, 0.5f)), sky_map(), 32, 256);
