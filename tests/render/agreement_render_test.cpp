@@ -136,11 +136,7 @@ Scene mirror_scene() {
     test::set_emission(s, light, Rgb(5.0f));
     test::add_quad(s, {1.2f, 2.5f, -2}, {2.8f, 0, 0}, {0, 0, 4}, 1);  // y = 2.5, x in [1.2, 4], faces -y
     // The ball below, the light in the middle, the ball's lit top in the mirror above.
-    s.camera.position = {4, 0.5f, 0};
-    s.camera.look_at = {0, 2, 0};
-    s.camera.fov_degrees = 80;
-    s.camera.width = kSize;
-    s.camera.height = kSize;
+    test::set_camera(s, Vec3f{4, 0.5f, 0}, Vec3f{0, 2, 0}, 80, kSize, kSize);
     s.sampler.seed = 3;
     return s;
 }

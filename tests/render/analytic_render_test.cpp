@@ -87,11 +87,7 @@ Scene light_over_plane(const LitPlane& setup) {
         test::add_quad(s, {-50, y, -50}, {100, 0, 0}, {0, 0, 100}, 0);
     uint32_t light = test::add_quad(s, {-0.5f, setup.light_y, -0.5f}, {1, 0, 0}, {0, 0, 1}, 1);  // faces -y
     test::set_emission(s, light, Rgb(kRadiance), setup.two_sided);
-    s.camera.position = setup.eye;
-    s.camera.look_at = setup.target;
-    s.camera.fov_degrees = 60;
-    s.camera.width = kSize;
-    s.camera.height = kSize;
+    test::set_camera(s, setup.eye, setup.target, 60, kSize, kSize);
     s.sampler.seed = 5;
     s.integrator.max_depth = 1;
     return s;

@@ -41,11 +41,7 @@ Scene sphere_under_sky(Material material, Image map, int size, int spp) {
     s.materials = {material};
     s.material_names = {"sphere"};
     test::add_sphere(s, {0, 0, 0}, 1.0);
-    s.camera.position = {0, 0.3f, 4};
-    s.camera.look_at = {0, 0, 0};
-    s.camera.fov_degrees = 40;
-    s.camera.width = size;
-    s.camera.height = size;
+    test::set_camera(s, Vec3f{0, 0.3f, 4}, Vec3f{0, 0, 0}, 40, size, size);
     s.sampler.spp = spp;
     s.sampler.seed = 3;
     s.integrator.max_depth = 256;  // glass: internal reflections; truncation is then negligible

@@ -53,11 +53,7 @@ Scene furnace_scene(const FurnaceCase& c) {
     }
     for (uint32_t shape = 0; shape < s.shapes.size(); ++shape) test::set_emission(s, shape, Rgb(1.0f));
     // Off centre and looking sideways, so distances and angles to the wall vary over the image.
-    s.camera.position = {0.3f, -0.2f, 0.1f};
-    s.camera.look_at = {1.0f, 0.4f, -0.5f};
-    s.camera.fov_degrees = 90;
-    s.camera.width = kSize;
-    s.camera.height = kSize;
+    test::set_camera(s, Vec3f{0.3f, -0.2f, 0.1f}, Vec3f{1.0f, 0.4f, -0.5f}, 90, kSize, kSize);
     s.sampler.spp = kSpp;
     s.sampler.seed = 11;
     s.integrator.type = c.type;

@@ -36,11 +36,7 @@ Scene overflow_scene(IntegratorType type) {
     // The emitters' power overflows too; uniform selection does not need it.
     s.integrator.light_selection = LightSelection::kUniform;
     s.integrator.type = type;
-    s.camera.position = {0, 0, -1};
-    s.camera.look_at = {0, 0, 0};
-    s.camera.fov_degrees = 40;
-    s.camera.width = kWidth;
-    s.camera.height = kHeight;
+    test::set_camera(s, Vec3f{0, 0, -1}, Vec3f{0, 0, 0}, 40, kWidth, kHeight);
     s.sampler.spp = kSpp;
     return s;
 }

@@ -7,6 +7,15 @@
 
 namespace candela::test {
 
+// Points the scene's camera (up +y) from `position` at `look_at` and sets the image size.
+inline void set_camera(Scene& scene, Vec3f position, Vec3f look_at, float fov_degrees, int width, int height) {
+    scene.camera.position = position;
+    scene.camera.look_at = look_at;
+    scene.camera.fov_degrees = fov_degrees;
+    scene.camera.width = width;
+    scene.camera.height = height;
+}
+
 // Adds a quad shape with the given material index; returns its shape id.
 inline uint32_t add_quad(Scene& scene, Vec3f corner, Vec3f e1, Vec3f e2, uint32_t material = 0) {
     scene.meshes.push_back(make_quad(corner, e1, e2));
@@ -32,11 +41,7 @@ inline Scene small_box_scene(int width, int height, int spp) {
     add_quad(s, {-1, -1, 1}, {2, 0, 0}, {0, 2, 0});   // back
     add_quad(s, {-1, -1, -1}, {0, 0, 2}, {0, 2, 0});  // left
     add_sphere(s, {0.3, -0.5, 0.2}, 0.5, 1);
-    s.camera.position = {0, 0, -4};
-    s.camera.look_at = {0, 0, 0};
-    s.camera.fov_degrees = 45;
-    s.camera.width = width;
-    s.camera.height = height;
+    set_camera(s, Vec3f{0, 0, -4}, Vec3f{0, 0, 0}, 45, width, height);
     s.sampler.spp = spp;
     s.sampler.seed = 42;
     s.integrator.max_distance = 1.0f;
@@ -87,11 +92,7 @@ inline Scene cornell_walls_scene(int width, int height, int spp) {
     // agreement tests to reach their precision in seconds.
     uint32_t light = add_quad(s, {-0.5f, 0.98f, -0.5f}, {1, 0, 0}, {0, 0, 1}, kCornellBlack);  // -y
     set_emission(s, light, Rgb(4.0f, 3.2f, 2.4f));
-    s.camera.position = {0, 0, -3.6f};
-    s.camera.look_at = {0, 0, 0};
-    s.camera.fov_degrees = 38;
-    s.camera.width = width;
-    s.camera.height = height;
+    set_camera(s, Vec3f{0, 0, -3.6f}, Vec3f{0, 0, 0}, 38, width, height);
     s.sampler.spp = spp;
     s.sampler.seed = 7;
     return s;
