@@ -23,7 +23,7 @@ Chi2Result filter_chi2(FilterType type, uint32_t first_index, uint32_t index_ste
     opt.res_x = opt.res_y = 60;
     opt.test_count = kChi2Tests;
     uint32_t index = first_index;
-    auto sampler = [&](Rng& rng) {
+    auto sampler = [&](Sampler& rng) {
         Vec2f p = sample_filter(type, index, rng.next_vec2f());
         index += index_step;
         return p;

@@ -50,7 +50,7 @@ void expect_fits(const Image& img, const Transform& to_world, EnvironmentSamplin
     opt.test_count = kChi2Tests;
     opt.res_x = 128;
     opt.res_y = 64;
-    auto sampler = [&](Rng& rng) -> std::optional<Vec3f> {
+    auto sampler = [&](Sampler& rng) -> std::optional<Vec3f> {
         auto s = env.sample(rng.next_vec2f());
         if (!s) return std::nullopt;
         return s->wi;

@@ -47,7 +47,7 @@ void expect_fits(const LightTestScene& scene, LightSelection selection, const Ve
     Chi2Options opt;
     opt.test_count = kChi2Tests;
     expect_corners_clear_of_cell_edges(scene, ref, domain, opt);
-    auto sampler = [&](Rng& rng) -> std::optional<Vec3f> {
+    auto sampler = [&](Sampler& rng) -> std::optional<Vec3f> {
         float uc = rng.next_float();
         Vec2f u = rng.next_vec2f();
         std::optional<LightSample> s = lights.sample(ref, uc, u);

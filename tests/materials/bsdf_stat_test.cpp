@@ -31,7 +31,7 @@ void expect_sampling_fits_pdf(const Bsdf& bsdf, Vec3f wo, double non_delta_fract
     Chi2Options opt;
     opt.test_count = kChi2Tests;
     opt.expected_integral = non_delta_fraction;
-    auto sampler = [&](Rng& rng) -> std::optional<Vec3f> {
+    auto sampler = [&](Sampler& rng) -> std::optional<Vec3f> {
         float uc = rng.next_float();
         auto s = bsdf.sample(wo, uc, rng.next_vec2f(), kRadiance);
         if (!s || s->is_delta) return std::nullopt;

@@ -89,6 +89,7 @@ Scene light_over_plane(const LitPlane& setup) {
     test::set_emission(s, light, Rgb(kRadiance), setup.two_sided);
     test::set_camera(s, setup.eye, setup.target, 60, kSize, kSize);
     s.sampler.seed = 5;
+    s.sampler.type = SamplerType::kIndependent;  // the z-tests need independent samples
     s.integrator.max_depth = 1;
     return s;
 }

@@ -29,7 +29,7 @@ TEST(AoIntegrator, MatchesClosedFormBetweenParallelPlanes) {
     double sum = 0;
     RayCounters counters;
     for (int i = 0; i < n; ++i) {
-        Rng rng = Rng::for_sample(0, uint64_t(i), 1);
+        Sampler rng(SamplerType::kIndependent, 0, uint32_t(i), 1);
         // The camera sits between the planes, looking down at the floor.
         sum += double(ao.radiance(Ray{{0, 0.5f, 0}, {0, -1, 0}}, rng, counters).r);
     }
@@ -49,7 +49,7 @@ TEST(AoIntegrator, OpenPlaneIsUnoccludedAndEnclosedPointIsOccluded) {
     AoIntegrator ao_open(open, kInfinity);
     RayCounters c;
     for (int i = 0; i < 100; ++i) {
-        Rng rng = Rng::for_sample(1, uint64_t(i), 0);
+        Sampler rng(SamplerType::kIndependent, 1, uint32_t(i), 0);
         EXPECT_EQ(ao_open.radiance(down_ray(), rng, c), Rgb(1.0f));
     }
     // Inside a closed sphere every direction is blocked.
@@ -59,7 +59,7 @@ TEST(AoIntegrator, OpenPlaneIsUnoccludedAndEnclosedPointIsOccluded) {
     Accelerator closed(inside.meshes, inside.spheres, inside.shapes);
     AoIntegrator ao_closed(closed, kInfinity);
     for (int i = 0; i < 100; ++i) {
-        Rng rng = Rng::for_sample(1, uint64_t(i), 0);
+        Sampler rng(SamplerType::kIndependent, 1, uint32_t(i), 0);
         EXPECT_EQ(ao_closed.radiance(Ray{{0, 0, 0}, {0, 0, 1}}, rng, c), Rgb(0.0f));
     }
 }
@@ -70,7 +70,7 @@ TEST(DebugIntegrators, NormalsDepthAlbedoOfAKnownHit) {
     test::add_quad(s, {-10, 0, -10}, {0, 0, 20}, {20, 0, 0}, 0);  // floor facing +y
     Accelerator accel(s.meshes, s.spheres, s.shapes);
     RayCounters c;
-    Rng rng;
+    Sampler rng(SamplerType::kIndependent, 0, 0, 0);
     EXPECT_EQ(NormalsIntegrator(accel).radiance(down_ray(), rng, c), Rgb(0.5f, 1.0f, 0.5f));
     // Depth counts from the camera position: near (2.5) plus the ray's own distance (1).
     EXPECT_EQ(DepthIntegrator(accel, 2.5f).radiance(down_ray(), rng, c), Rgb(3.5f));

@@ -43,6 +43,7 @@ Scene sphere_under_sky(Material material, Image map, int size, int spp) {
     test::add_sphere(s, {0, 0, 0}, 1.0);
     test::set_camera(s, Vec3f{0, 0.3f, 4}, Vec3f{0, 0, 0}, 40, size, size);
     s.sampler.spp = spp;
+    s.sampler.type = SamplerType::kIndependent;  // the z-tests need independent samples
     s.sampler.seed = 3;
     s.integrator.max_depth = 256;  // glass: internal reflections; truncation is then negligible
     s.environment = EnvironmentSettings{std::move(map), 1.0f, Transform(), EnvironmentSampling::kImportance};

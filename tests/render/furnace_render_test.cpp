@@ -55,6 +55,7 @@ Scene furnace_scene(const FurnaceCase& c) {
     // Off centre and looking sideways, so distances and angles to the wall vary over the image.
     test::set_camera(s, Vec3f{0.3f, -0.2f, 0.1f}, Vec3f{1.0f, 0.4f, -0.5f}, 90, kSize, kSize);
     s.sampler.spp = kSpp;
+    s.sampler.type = SamplerType::kIndependent;  // the z-tests need independent samples
     s.sampler.seed = 11;
     s.integrator.type = c.type;
     s.integrator.mis = c.mis;

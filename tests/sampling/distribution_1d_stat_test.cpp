@@ -46,7 +46,7 @@ void expect_discrete_fits(const std::vector<float>& w) {
     opt.test_count = kChi2Tests;
     opt.res_x = static_cast<int>(w.size());
     opt.res_y = 4;
-    auto sampler = [&](Rng& rng) {
+    auto sampler = [&](Sampler& rng) {
         float u = rng.next_float();
         float v = rng.next_float();
         float y = rng.next_float();
@@ -73,7 +73,7 @@ TEST(Distribution1DChi2, ContinuousSamplesMatchDensity) {
     opt.test_count = kChi2Tests;
     opt.res_x = 64;
     opt.res_y = 4;
-    auto sampler = [&](Rng& rng) {
+    auto sampler = [&](Sampler& rng) {
         float u = rng.next_float();
         float y = rng.next_float();
         return Vec2f(d.sample_continuous(u).x, y);

@@ -26,7 +26,7 @@ void expect_fits(const Domain& domain, Sampler sampler, Pdf pdf, Chi2Options opt
 }
 
 TEST(WarpsChi2, UniformSphereMatchesPdf) {
-    expect_fits(SphericalDomain{}, [](Rng& rng) { return sample_uniform_sphere(rng.next_vec2f()); },
+    expect_fits(SphericalDomain{}, [](Sampler& rng) { return sample_uniform_sphere(rng.next_vec2f()); },
                 uniform_sphere_pdf);
 }
 
@@ -34,13 +34,13 @@ TEST(WarpsChi2, UniformHemisphereMatchesPdf) {
     // The whole sphere, so that a sample below the horizon fails in a zero cell (the horizon
     // cos theta = 0 is a row edge of the 50 rows).
     expect_fits(SphericalDomain{},
-                [](Rng& rng) { return sample_uniform_hemisphere(rng.next_vec2f()); },
+                [](Sampler& rng) { return sample_uniform_hemisphere(rng.next_vec2f()); },
                 uniform_hemisphere_pdf);
 }
 
 TEST(WarpsChi2, CosineHemisphereMatchesPdf) {
     expect_fits(SphericalDomain{},
-                [](Rng& rng) { return sample_cosine_hemisphere(rng.next_vec2f()); },
+                [](Sampler& rng) { return sample_cosine_hemisphere(rng.next_vec2f()); },
                 cosine_hemisphere_pdf);
 }
 
@@ -48,7 +48,7 @@ TEST(WarpsChi2, CosineHemisphereMatchesPdf) {
 // covers cos theta in [0.9, 1] (edge at row 25).
 void expect_cone_fits(float cos_theta_max, SphericalDomain domain) {
     expect_fits(domain,
-                [=](Rng& rng) { return sample_uniform_cone(rng.next_vec2f(), cos_theta_max); },
+                [=](Sampler& rng) { return sample_uniform_cone(rng.next_vec2f(), cos_theta_max); },
                 [=](Vec3f w) { return uniform_cone_pdf(w, cos_theta_max); });
 }
 TEST(WarpsChi2, WideConeMatchesPdf) { expect_cone_fits(-0.3f, SphericalDomain{}); }
@@ -59,7 +59,7 @@ TEST(WarpsChi2, ConcentricDiskMatchesPdf) {
     Chi2Options opt = options();
     opt.res_x = opt.res_y = 64;
     expect_fits(PlanarDomain{{-1.0, -1.0}, {1.0, 1.0}},
-                [](Rng& rng) { return sample_concentric_disk(rng.next_vec2f()); },
+                [](Sampler& rng) { return sample_concentric_disk(rng.next_vec2f()); },
                 concentric_disk_pdf, opt);
 }
 
@@ -70,7 +70,7 @@ TEST(WarpsChi2, TriangleMatchesPdf) {
         return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
     };
     const float area = 0.5f * edge(p0, p1, p2);
-    auto sampler = [=](Rng& rng) {
+    auto sampler = [=](Sampler& rng) {
         Vec3f b = sample_uniform_triangle(rng.next_vec2f());
         return p0 * b.x + p1 * b.y + p2 * b.z;
     };
@@ -90,7 +90,7 @@ void expect_1d_fits(double lo, double hi, Sample1d sample, Pdf1d pdf) {
     opt.res_x = 100;
     opt.res_y = 10;
     expect_fits(PlanarDomain{{lo, 0.0}, {hi, 1.0}},
-                [=](Rng& rng) {
+                [=](Sampler& rng) {
                     float x = sample(rng.next_float());
                     return Vec2f(x, rng.next_float());
                 },

@@ -13,12 +13,17 @@
 //
 // Usage:
 //   Chi2Options opt; opt.test_count = kTestsInThisSuite;
-//   auto r = chi2_test(SphericalDomain{}, [](Rng& rng) { return sample_cosine_hemisphere(
+//   auto r = chi2_test(SphericalDomain{}, [](Sampler& rng) { return sample_cosine_hemisphere(
 //       rng.next_vec2f()); }, [](Vec3f w) { return cosine_hemisphere_pdf(w); }, opt);
 //   EXPECT_TRUE(r.passed) << r.message;
 //
-// The sampler takes the harness's Rng& and returns a point or std::optional<point> (nullopt: the
-// sampler failed, as a BSDF may; then the pdf integrates to the success probability).
+// The sampler takes the harness's Sampler& (a fresh one per sample: sample index s of one pixel)
+// and returns a point or std::optional<point> (nullopt: the sampler failed, as a BSDF may; then
+// the pdf integrates to the success probability). By default the histogram is drawn twice, from
+// independent random numbers and from Owen-scrambled Sobol points, and both must pass: a sampling
+// routine must be right whichever sampler feeds it. (Low-discrepancy points make the statistic
+// smaller than chance would, so the Sobol run can only miss a defect that is tiny; the independent
+// run keeps the test's full power.)
 // Features of the pdf narrower than 1/16 of a cell can escape the integration: choose the grid
 // so that the support spans several cells, and put known discontinuities on cell edges.
 #include <algorithm>
@@ -33,7 +38,7 @@
 
 #include "candela/math/constants.h"
 #include "candela/math/vec.h"
-#include "candela/sampling/rng.h"
+#include "candela/sampling/sampler.h"
 
 namespace candela::test {
 
@@ -141,6 +146,8 @@ struct Chi2Options {
     // nullopt skips the check.
     std::optional<double> expected_integral = 1.0;
     double integral_tolerance = 1e-3;  // absolute
+    // The samplers that feed the histogram, each in its own test.
+    std::vector<SamplerType> sources = {SamplerType::kIndependent, SamplerType::kSobol};
 };
 
 struct Chi2Result {
@@ -254,14 +261,19 @@ double integrate_pdf(const Domain& domain, const Pdf& pdf, int res_x = 40, int r
 }
 
 // Tests that `sample` draws points distributed as `pdf` over `domain` (see the top of the file).
-template <class Domain, class Sampler, class Pdf>
-Chi2Result chi2_test(const Domain& domain, Sampler&& sample, Pdf&& pdf,
+namespace detail {
+template <class Domain, class SampleFn>
+void histogram_test(const Domain& domain, SampleFn& sample, const std::vector<double>& expected,
+                    const Chi2Options& opt, SamplerType source, Chi2Result& result);
+}  // namespace detail
+
+template <class Domain, class SampleFn, class Pdf>
+Chi2Result chi2_test(const Domain& domain, SampleFn&& sample, Pdf&& pdf,
                      const Chi2Options& opt = {}) {
     Chi2Result result;
     result.alpha = sidak_alpha(opt.alpha, opt.test_count);
     const int nx = opt.res_x, ny = opt.res_y;
     const auto n = static_cast<double>(opt.sample_count);
-    Vec2d lo = domain.param_min(), hi = domain.param_max();
 
     // 1. Expected counts, to 0.01 of a sample per cell: far below the sampling noise (>= 2 samples
     //    in any cell that is not pooled).
@@ -282,11 +294,36 @@ Chi2Result chi2_test(const Domain& domain, Sampler&& sample, Pdf&& pdf,
         return result;
     }
 
+    // 2. and 3. for each source of random numbers.
+    std::string messages;
+    bool all_passed = true;
+    const Chi2Result before_histogram = result;
+    for (SamplerType source : opt.sources) {
+        Chi2Result r = before_histogram;
+        detail::histogram_test(domain, sample, expected, opt, source, r);
+        messages += fmt::format("{}{}: {}", messages.empty() ? "" : "\n",
+                                source == SamplerType::kSobol ? "sobol" : "independent", r.message);
+        all_passed = all_passed && r.passed;
+        if (!r.passed || source == opt.sources.front()) result = r;
+    }
+    result.passed = all_passed;
+    result.message = messages;
+    return result;
+}
+
+namespace detail {
+
+// Steps 2 and 3 of chi2_test for one source of random numbers: the histogram and Pearson's test.
+template <class Domain, class SampleFn>
+void histogram_test(const Domain& domain, SampleFn& sample, const std::vector<double>& expected,
+                    const Chi2Options& opt, SamplerType source, Chi2Result& result) {
+    const int nx = opt.res_x, ny = opt.res_y;
+    Vec2d lo = domain.param_min(), hi = domain.param_max();
     // 2. The histogram; impossible samples fail at once.
     std::vector<double> observed(expected.size(), 0.0);
-    Rng rng(opt.seed, 0x63686932ull);  // stream "chi2"
     for (uint64_t s = 0; s < opt.sample_count; ++s) {
-        auto drawn = sample(rng);
+        Sampler sampler(source, 0x63686932ull /* "chi2" */, static_cast<uint32_t>(s), opt.seed);
+        auto drawn = sample(sampler);
         typename Domain::Point point;
         if constexpr (detail::IsOptional<decltype(drawn)>::value) {
             if (!drawn) continue;
@@ -300,7 +337,7 @@ Chi2Result chi2_test(const Domain& domain, Sampler&& sample, Pdf&& pdf,
             result.message = fmt::format(
                 "sample {} has parameters ({}, {}), outside the domain [{}, {}] x [{}, {}]", s, q.x,
                 q.y, lo.x, hi.x, lo.y, hi.y);
-            return result;
+            return;
         }
         int i = std::min(nx - 1, static_cast<int>((q.x - lo.x) / (hi.x - lo.x) * nx));
         int j = std::min(ny - 1, static_cast<int>((q.y - lo.y) / (hi.y - lo.y) * ny));
@@ -308,7 +345,7 @@ Chi2Result chi2_test(const Domain& domain, Sampler&& sample, Pdf&& pdf,
         if (expected[cell] == 0.0) {
             result.message = fmt::format("sample {} at parameters ({}, {}) fell in cell ({}, {}), "
                                          "where the pdf integrates to 0", s, q.x, q.y, i, j);
-            return result;
+            return;
         }
         observed[cell] += 1.0;
     }
@@ -342,7 +379,7 @@ Chi2Result chi2_test(const Domain& domain, Sampler&& sample, Pdf&& pdf,
     if (result.dof < 1) {
         result.message = fmt::format("only {} bin(s) after pooling: refine the grid or draw more "
                                      "samples", bins.size());
-        return result;
+        return;
     }
     result.p_value = chi2_p_value(result.statistic, result.dof);
     result.passed = result.p_value >= result.alpha;
@@ -373,7 +410,8 @@ Chi2Result chi2_test(const Domain& domain, Sampler&& sample, Pdf&& pdf,
             lo.y + ch * static_cast<double>(j), lo.y + ch * static_cast<double>(j + 1), observed[c],
             expected[c]);
     }
-    return result;
 }
+
+}  // namespace detail
 
 }  // namespace candela::test

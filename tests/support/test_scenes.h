@@ -43,6 +43,7 @@ inline Scene small_box_scene(int width, int height, int spp) {
     add_sphere(s, {0.3, -0.5, 0.2}, 0.5, 1);
     set_camera(s, Vec3f{0, 0, -4}, Vec3f{0, 0, 0}, 45, width, height);
     s.sampler.spp = spp;
+    s.sampler.type = SamplerType::kIndependent;  // the z-tests need independent samples
     s.sampler.seed = 42;
     s.integrator.max_distance = 1.0f;
     return s;
@@ -94,6 +95,7 @@ inline Scene cornell_walls_scene(int width, int height, int spp) {
     set_emission(s, light, Rgb(4.0f, 3.2f, 2.4f));
     set_camera(s, Vec3f{0, 0, -3.6f}, Vec3f{0, 0, 0}, 38, width, height);
     s.sampler.spp = spp;
+    s.sampler.type = SamplerType::kIndependent;  // the z-tests need independent samples
     s.sampler.seed = 7;
     return s;
 }

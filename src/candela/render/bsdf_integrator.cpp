@@ -4,7 +4,7 @@
 namespace candela {
 
 // smallpt's radiance(): follow BSDF samples and add emission wherever the path lands.
-Rgb BsdfIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& counters) const {
+Rgb BsdfIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const {
     Rgb L(0.0f), beta(1.0f);
     float eta_scale = 1.0f;
     Ray ray = camera_ray;
@@ -19,10 +19,10 @@ Rgb BsdfIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& count
         if (bounces == scene_.integrator.max_depth) break;
 
         PathVertex v(scene_, *hit, ray);
-        std::optional<BsdfSample> bs = continue_path(v, rng, beta, ray);
+        std::optional<BsdfSample> bs = continue_path(v, sampler, beta, ray);
         if (!bs) break;
         if (bs->is_transmission) eta_scale *= sqr(bs->eta);
-        if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, rng)) break;
+        if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, sampler)) break;
     }
     return L;
 }

@@ -8,7 +8,7 @@
 
 namespace candela {
 
-Rgb NormalsIntegrator::radiance(const Ray& ray, Rng&, RayCounters& counters) const {
+Rgb NormalsIntegrator::radiance(const Ray& ray, Sampler&, RayCounters& counters) const {
     ++counters.camera;
     auto hit = accel_.intersect(ray);
     if (!hit) return Rgb(0.0f);
@@ -16,27 +16,27 @@ Rgb NormalsIntegrator::radiance(const Ray& ray, Rng&, RayCounters& counters) con
     return {n.x, n.y, n.z};
 }
 
-Rgb DepthIntegrator::radiance(const Ray& ray, Rng&, RayCounters& counters) const {
+Rgb DepthIntegrator::radiance(const Ray& ray, Sampler&, RayCounters& counters) const {
     ++counters.camera;
     auto hit = accel_.intersect(ray);
     return hit ? Rgb(near_ + hit->t) : Rgb(0.0f);
 }
 
-Rgb AlbedoIntegrator::radiance(const Ray& ray, Rng&, RayCounters& counters) const {
+Rgb AlbedoIntegrator::radiance(const Ray& ray, Sampler&, RayCounters& counters) const {
     ++counters.camera;
     auto hit = accel_.intersect(ray);
     if (!hit) return Rgb(0.0f);
     return material_albedo(scene_.materials[scene_.shapes[hit->shape_id].material]);
 }
 
-Rgb AoIntegrator::radiance(const Ray& ray, Rng& rng, RayCounters& counters) const {
+Rgb AoIntegrator::radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
     ++counters.camera;
     auto hit = accel_.intersect(ray);
     if (!hit) return Rgb(0.0f);
     // Occlusion is measured on the side the camera sees, whichever side of the shape that is.
     Vec3f ns = face_forward(hit->ns, -ray.d);
     Vec3f ng = face_forward(hit->ng, ns);
-    Vec3f w = Frame::from_normal(ns).to_world(sample_cosine_hemisphere(rng.next_vec2f()));
+    Vec3f w = Frame::from_normal(ns).to_world(sample_cosine_hemisphere(sampler.next_vec2f()));
     // Directions below the geometric surface (possible where shading normals bend away from it)
     // are blocked by the surface itself.
     if (dot(w, ng) <= 0.0f) return Rgb(0.0f);

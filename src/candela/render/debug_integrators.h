@@ -10,7 +10,7 @@ namespace candela {
 class NormalsIntegrator final : public Integrator {
   public:
     explicit NormalsIntegrator(const Accelerator& accel) : accel_(accel) {}
-    Rgb radiance(const Ray& ray, Rng& rng, RayCounters& counters) const override;
+    Rgb radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const override;
 
   private:
     const Accelerator& accel_;
@@ -20,7 +20,7 @@ class NormalsIntegrator final : public Integrator {
 class DepthIntegrator final : public Integrator {
   public:
     DepthIntegrator(const Accelerator& accel, float near) : accel_(accel), near_(near) {}
-    Rgb radiance(const Ray& ray, Rng& rng, RayCounters& counters) const override;
+    Rgb radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const override;
 
   private:
     const Accelerator& accel_;
@@ -31,7 +31,7 @@ class DepthIntegrator final : public Integrator {
 class AlbedoIntegrator final : public Integrator {
   public:
     AlbedoIntegrator(const Scene& scene, const Accelerator& accel) : scene_(scene), accel_(accel) {}
-    Rgb radiance(const Ray& ray, Rng& rng, RayCounters& counters) const override;
+    Rgb radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const override;
 
   private:
     const Scene& scene_;
@@ -44,7 +44,7 @@ class AlbedoIntegrator final : public Integrator {
 class AoIntegrator final : public Integrator {
   public:
     AoIntegrator(const Accelerator& accel, float max_distance) : accel_(accel), max_distance_(max_distance) {}
-    Rgb radiance(const Ray& ray, Rng& rng, RayCounters& counters) const override;
+    Rgb radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const override;
 
   private:
     const Accelerator& accel_;

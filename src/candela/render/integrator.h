@@ -7,7 +7,7 @@
 #include "candela/math/ray.h"
 #include "candela/math/rgb.h"
 #include "candela/render/ray_counters.h"
-#include "candela/sampling/rng.h"
+#include "candela/sampling/sampler.h"
 
 namespace candela {
 
@@ -18,9 +18,9 @@ struct Scene;
 class Integrator {
   public:
     virtual ~Integrator() = default;
-    // The value carried back along camera_ray (unit direction). Uses only `rng` for randomness,
+    // The value carried back along camera_ray (unit direction). Uses only `sampler` for randomness,
     // so a sample is a pure function of its random stream.
-    virtual Rgb radiance(const Ray& camera_ray, Rng& rng, RayCounters& counters) const = 0;
+    virtual Rgb radiance(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const = 0;
 };
 
 // The integrator the scene asks for. The arguments must outlive it.

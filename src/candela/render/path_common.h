@@ -8,7 +8,7 @@
 #include "candela/math/frame.h"
 #include "candela/render/ray_counters.h"
 #include "candela/render/render_settings.h"
-#include "candela/sampling/rng.h"
+#include "candela/sampling/sampler.h"
 #include "candela/scene/scene.h"
 
 namespace candela {
@@ -39,8 +39,8 @@ inline float power_heuristic(float pdf_a, float pdf_b) {
 // largest component (with refraction's eta^2 radiance scaling taken out, as pbrt-v4 does, so a
 // path inside glass is not killed for being compressed); a fixed probability when the settings
 // give one (GAMES101's 0.8).
-inline bool survive_russian_roulette(Rgb& beta, float eta_scale, int bounces, const IntegratorSettings& s, Rng& rng) {
-    float u = rng.next_float();  // drawn every bounce so later dimensions do not shift
+inline bool survive_russian_roulette(Rgb& beta, float eta_scale, int bounces, const IntegratorSettings& s, Sampler& sampler) {
+    float u = sampler.next_float();  // drawn every bounce so later dimensions do not shift
     if (bounces <= s.rr_depth) return true;
     float survive = s.rr_probability > 0.0f ? s.rr_probability : std::min(1.0f, (beta * eta_scale).max_component());
     if (survive <= 0.0f || u >= survive) return false;
@@ -51,9 +51,9 @@ inline bool survive_russian_roulette(Rgb& beta, float eta_scale, int bounces, co
 // One light sample for the vertex: f |cos| Le / pdf, weighted by the power heuristic against
 // BSDF sampling when `mis`. Counts its shadow ray. Black for delta-only BSDFs.
 inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, const Accelerator& accel, bool mis,
-                               Rng& rng, RayCounters& counters) {
-    float uc = rng.next_float();
-    Vec2f u = rng.next_vec2f();
+                               Sampler& sampler, RayCounters& counters) {
+    float uc = sampler.next_float();
+    Vec2f u = sampler.next_vec2f();
     if (v.bsdf.is_delta_only() || lights.empty()) return Rgb(0.0f);
     std::optional<LightSample> ls = lights.sample(v.hit.p, uc, u);
     if (!ls || ls->pdf <= 0.0f || ls->Le.is_black()) return Rgb(0.0f);
@@ -70,9 +70,9 @@ inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, cons
 
 // Samples the BSDF for the path's next direction and moves the path there: beta *= f |cos| / pdf
 // and `ray` becomes the spawned ray. Returns the sample, or nullopt when the path ends here.
-inline std::optional<BsdfSample> continue_path(const PathVertex& v, Rng& rng, Rgb& beta, Ray& ray) {
-    float uc = rng.next_float();
-    Vec2f u = rng.next_vec2f();
+inline std::optional<BsdfSample> continue_path(const PathVertex& v, Sampler& sampler, Rgb& beta, Ray& ray) {
+    float uc = sampler.next_float();
+    Vec2f u = sampler.next_vec2f();
     std::optional<BsdfSample> bs = v.bsdf.sample(v.wo, uc, u, TransportMode::kRadiance);
     if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) return std::nullopt;
     beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);

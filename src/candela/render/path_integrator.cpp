@@ -6,7 +6,7 @@ namespace candela {
 // pbrt-v4's PathIntegrator::Li. At each vertex: emission found
 // by the BSDF-sampled ray (MIS-weighted against having sampled the light), then one light sample
 // (MIS-weighted against having sampled the BSDF), then the next direction by BSDF sampling.
-Rgb PathIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& counters) const {
+Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const {
     Rgb L(0.0f), beta(1.0f);
     float eta_scale = 1.0f;  // product of eta^2 over refractions, to undo them for roulette
     Ray ray = camera_ray;
@@ -39,15 +39,15 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& count
         if (bounces == scene_.integrator.max_depth) break;
 
         PathVertex v(scene_, *hit, ray);
-        L += beta * sample_direct_light(v, lights_, accel_, scene_.integrator.mis, rng, counters);
+        L += beta * sample_direct_light(v, lights_, accel_, scene_.integrator.mis, sampler, counters);
 
-        std::optional<BsdfSample> bs = continue_path(v, rng, beta, ray);
+        std::optional<BsdfSample> bs = continue_path(v, sampler, beta, ray);
         if (!bs) break;
         if (bs->is_transmission) eta_scale *= sqr(bs->eta);
         after_delta = bs->is_delta;
         prev_bsdf_pdf = bs->pdf;
         prev_p = hit->p;
-        if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, rng)) break;
+        if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, sampler)) break;
     }
     return L;
 }

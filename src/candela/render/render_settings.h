@@ -4,6 +4,7 @@
 
 #include "candela/lights/light_selection.h"
 #include "candela/math/constants.h"
+#include "candela/sampling/sampler.h"
 
 namespace candela {
 
@@ -24,6 +25,7 @@ struct IntegratorSettings {
 };
 
 struct SamplerSettings {
+    SamplerType type = SamplerType::kSobol;  // the faster to a given error (bench/RESULTS.md)
     int spp = 16;
     uint64_t seed = 0;
 };

@@ -28,14 +28,14 @@ class TransportIntegrator : public Integrator {
 class PathIntegrator final : public TransportIntegrator {
   public:
     using TransportIntegrator::TransportIntegrator;
-    Rgb radiance(const Ray& ray, Rng& rng, RayCounters& counters) const override;
+    Rgb radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const override;
 };
 
 // Pure BSDF sampling: light is found only by hitting emitters (smallpt's estimator).
 class BsdfIntegrator final : public TransportIntegrator {
   public:
     using TransportIntegrator::TransportIntegrator;
-    Rgb radiance(const Ray& ray, Rng& rng, RayCounters& counters) const override;
+    Rgb radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const override;
 };
 
 // Whitted-style ray tracing (pbrt-v3's WhittedIntegrator): emission seen directly or through
@@ -44,7 +44,7 @@ class BsdfIntegrator final : public TransportIntegrator {
 class WhittedIntegrator final : public TransportIntegrator {
   public:
     using TransportIntegrator::TransportIntegrator;
-    Rgb radiance(const Ray& ray, Rng& rng, RayCounters& counters) const override;
+    Rgb radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const override;
 };
 
 }  // namespace candela

@@ -3,7 +3,7 @@
 
 namespace candela {
 
-Rgb WhittedIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& counters) const {
+Rgb WhittedIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const {
     Rgb L(0.0f), beta(1.0f);
     Ray ray = camera_ray;
     for (int bounces = 0;; ++bounces) {
@@ -18,10 +18,10 @@ Rgb WhittedIntegrator::radiance(const Ray& camera_ray, Rng& rng, RayCounters& co
         if (bounces == scene_.integrator.max_depth) break;
 
         PathVertex v(scene_, *hit, ray);
-        L += beta * sample_direct_light(v, lights_, accel_, /*mis=*/false, rng, counters);
+        L += beta * sample_direct_light(v, lights_, accel_, /*mis=*/false, sampler, counters);
 
         // Only delta lobes continue the path; a non-delta choice ends it (its light is counted).
-        std::optional<BsdfSample> bs = continue_path(v, rng, beta, ray);
+        std::optional<BsdfSample> bs = continue_path(v, sampler, beta, ray);
         if (!bs || !bs->is_delta) break;
     }
     return L;

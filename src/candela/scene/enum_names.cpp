@@ -13,6 +13,7 @@ namespace {
 constexpr std::array<std::string_view, 7> kIntegratorTypeNames = {"path",    "bsdf",  "whitted", "normals",
                                                                   "depth",   "albedo", "ao"};
 constexpr std::array<std::string_view, 2> kLightSelectionNames = {"power", "uniform"};
+constexpr std::array<std::string_view, 2> kSamplerTypeNames = {"independent", "sobol"};
 constexpr std::array<std::string_view, 4> kFilterTypeNames = {"box", "tent", "gaussian", "smallpt"};
 constexpr std::array<std::string_view, 4> kTonemapNames = {"clamp", "exposure", "reinhard", "aces"};
 constexpr std::array<std::string_view, 2> kTransferNames = {"srgb", "gamma"};
@@ -37,6 +38,7 @@ std::string_view integrator_type_name(IntegratorType type) {
 }
 std::string_view filter_type_name(FilterType type) { return name_of(kFilterTypeNames, type); }
 std::string_view light_selection_name(LightSelection s) { return name_of(kLightSelectionNames, s); }
+std::string_view sampler_type_name(SamplerType t) { return name_of(kSamplerTypeNames, t); }
 std::string_view tonemap_name(Tonemap tonemap) { return name_of(kTonemapNames, tonemap); }
 std::string_view transfer_name(Transfer transfer) { return name_of(kTransferNames, transfer); }
 
@@ -49,6 +51,9 @@ std::optional<FilterType> parse_filter_type(std::string_view name) {
 std::optional<LightSelection> parse_light_selection(std::string_view name) {
     return value_of<LightSelection>(kLightSelectionNames, name);
 }
+std::optional<SamplerType> parse_sampler_type(std::string_view name) {
+    return value_of<SamplerType>(kSamplerTypeNames, name);
+}
 std::optional<Tonemap> parse_tonemap(std::string_view name) {
     return value_of<Tonemap>(kTonemapNames, name);
 }
@@ -59,6 +64,7 @@ std::optional<Transfer> parse_transfer(std::string_view name) {
 std::span<const std::string_view> integrator_type_names() { return kIntegratorTypeNames; }
 std::span<const std::string_view> filter_type_names() { return kFilterTypeNames; }
 std::span<const std::string_view> light_selection_names() { return kLightSelectionNames; }
+std::span<const std::string_view> sampler_type_names() { return kSamplerTypeNames; }
 std::span<const std::string_view> tonemap_names() { return kTonemapNames; }
 std::span<const std::string_view> transfer_names() { return kTransferNames; }
 

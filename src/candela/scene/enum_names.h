@@ -17,6 +17,7 @@ namespace candela {
 std::string_view integrator_type_name(IntegratorType type);
 std::string_view filter_type_name(FilterType type);
 std::string_view light_selection_name(LightSelection selection);
+std::string_view sampler_type_name(SamplerType type);
 std::string_view tonemap_name(Tonemap tonemap);
 std::string_view transfer_name(Transfer transfer);
 
@@ -24,6 +25,7 @@ std::string_view transfer_name(Transfer transfer);
 std::optional<IntegratorType> parse_integrator_type(std::string_view name);
 std::optional<FilterType> parse_filter_type(std::string_view name);
 std::optional<LightSelection> parse_light_selection(std::string_view name);
+std::optional<SamplerType> parse_sampler_type(std::string_view name);
 std::optional<Tonemap> parse_tonemap(std::string_view name);
 std::optional<Transfer> parse_transfer(std::string_view name);
 
@@ -31,6 +33,7 @@ std::optional<Transfer> parse_transfer(std::string_view name);
 std::span<const std::string_view> integrator_type_names();
 std::span<const std::string_view> filter_type_names();
 std::span<const std::string_view> light_selection_names();
+std::span<const std::string_view> sampler_type_names();
 std::span<const std::string_view> tonemap_names();
 std::span<const std::string_view> transfer_names();
 

@@ -1,0 +1,86 @@
+#pragma once
+// The source of every random number of one camera sample. Integrators draw from it in a fixed
+// order (one request per decision, the same requests every bounce whether or not they are used),
+// so a request's position in that order is its dimension:
+//
+//   request 0      2D  pixel filter (film position)
+//   per bounce     1D  light choice, 2D light point (next-event estimation)
+//                  1D  BSDF lobe choice, 2D BSDF direction
+//                  1D  Russian roulette
+//
+// Two kinds (scene key sampler.type):
+//  - independent: PCG32 from Rng::for_sample(pixel, sample, seed), as before: every number
+//    independent of every other.
+//  - sobol: Owen-scrambled Sobol points (owen_sobol.h), randomized per pixel: request d of sample
+//    i in pixel p is point shuffle(i) of the 2D (0,2)-sequence, scrambled and shuffled by hashes
+//    of (seed, p, d). The first 2^m samples of a pixel are then a (0,m,2)-net for every request.
+//
+// Either way a sample is a pure function of (pixel, sample index, seed): images do not depend on
+// thread count, tile order or interruptions.
+#include <cstdint>
+
+#include "candela/core/platform.h"
+#include "candela/math/vec.h"
+#include "candela/sampling/owen_sobol.h"
+#include "candela/sampling/rng.h"
+
+namespace candela {
+
+enum class SamplerType { kIndependent, kSobol };
+
+class Sampler {
+  public:
+    CANDELA_HD Sampler(SamplerType type, uint64_t pixel_index, uint32_t sample_index, uint64_t seed)
+        : type_(type), index_(sample_index) {
+        if (type == SamplerType::kIndependent)
+            rng_ = Rng::for_sample(pixel_index, sample_index, seed);
+        else
+            pixel_key_ = mix_bits(mix_bits(seed) ^ pixel_index);
+    }
+
+    // A uniform number in [0, 1), never 1.0.
+    CANDELA_HD float next_float() {
+        if (type_ == SamplerType::kIndependent) return rng_.next_float();
+        uint64_t key = request_key();
+        return u32_to_unit_float(scrambled_dimension0(shuffled_index(key), uint32_t(key >> 32)));
+    }
+
+    // A uniform point in [0, 1)^2 (for independent sampling: x drawn first).
+    CANDELA_HD Vec2f next_vec2f() {
+        if (type_ == SamplerType::kIndependent) return rng_.next_vec2f();
+        uint64_t key = request_key();
+        uint32_t i = shuffled_index(key);
+        // The y scramble's seed: the key's halves already seed the shuffle and x; a 32-bit
+        // multiplicative hash of them gives a third, unrelated one.
+        uint32_t y_seed = (uint32_t(key) ^ uint32_t(key >> 32)) * 0x9e3779b9u + 0x7f4a7c15u;
+        return {u32_to_unit_float(scrambled_dimension0(i, uint32_t(key >> 32))),
+                u32_to_unit_float(nested_uniform_scramble(sobol_dimension1(i), y_seed))};
+    }
+
+    CANDELA_HD SamplerType type() const { return type_; }
+    CANDELA_HD uint32_t sample_index() const { return index_; }
+
+  private:
+    // The hash of (seed, pixel, request number); the request counter moves on.
+    CANDELA_HD uint64_t request_key() { return mix_bits(pixel_key_ ^ (uint64_t(request_++) << 1u)); }
+    // The sample's position in this request's private order of the sequence. The index is
+    // scrambled like a fraction: bit k of the result depends on bits k and above. The first 2^m
+    // indices have zeros from bit m up, so they map to one aligned block of 2^m points of the
+    // sequence (in scrambled order), and an aligned block of Sobol points is a net.
+    CANDELA_HD uint32_t shuffled_index(uint64_t key) const {
+        return nested_uniform_scramble(index_, uint32_t(key));
+    }
+
+    // nested_uniform_scramble(sobol_dimension0(i), seed) without the two reversals that cancel.
+    CANDELA_HD static uint32_t scrambled_dimension0(uint32_t i, uint32_t seed) {
+        return reverse_bits(laine_karras_permutation(i, seed));
+    }
+
+    SamplerType type_;
+    uint32_t index_;
+    uint32_t request_ = 0;
+    uint64_t pixel_key_ = 0;
+    Rng rng_;
+};
+
+}  // namespace candela
