@@ -117,7 +117,10 @@ TEST(MeshLoader, RejectsNonFinitePositions) {
     std::ofstream(file) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                            "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                            "end_header\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n";
-    EXPECT_TRUE(contains(load_error(file).message(), "vertex 2 has a non-finite position"));
+    const SceneError e = load_error(file);
+    EXPECT_EQ(e.where().line, 11);  // the record's line
+    EXPECT_TRUE(contains(e.message(), "element \"vertex\", record 2 of 3: the vertex position (1, nan, 0) is not finite"))
+        << e.message();
 }
 
 TEST(MeshLoader, ReportsErrorsOfBothFormatsWithFileAndLine) {

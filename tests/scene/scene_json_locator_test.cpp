@@ -110,6 +110,20 @@ TEST(FindJsonPointer, LastOfDuplicateKeysWins) {
     EXPECT_EQ(find_json_pointer(text, "/k")->value_offset, text.find('2'));
 }
 
+TEST(FindJsonPointer, FindsValuesAtAnyDepthWithoutRecursing) {
+    // 100000 levels would overflow the stack of a reader that recursed per level.
+    constexpr size_t kDepth = 100000;
+    const std::string text = "{\"a\": " + std::string(kDepth, '[') + "7" + std::string(kDepth, ']') + ", \"b\": 8}";
+    std::string deepest = "/a";
+    for (size_t i = 0; i < kDepth; ++i) deepest += "/0";
+    auto seven = find_json_pointer(text, deepest);
+    ASSERT_TRUE(seven);
+    EXPECT_EQ(seven->value_offset, 6 + kDepth);
+    auto after = find_json_pointer(text, "/b");
+    ASSERT_TRUE(after);
+    EXPECT_EQ(text[after->value_offset], '8');
+}
+
 TEST(FindDuplicateKey, ReportsTheRepeatedKeyWithItsObject) {
     const std::string text = R"({"a": {"x": 1, "y": 2}, "b": [{"x": 1, "y": 2, "x": 3}]})";
     auto dup = find_duplicate_key(text);

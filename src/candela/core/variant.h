@@ -16,4 +16,7 @@ template <class... Fs>
 struct Overloaded : Fs... {
     using Fs::operator()...;
 };
+// C++20 deduces this for aggregates; clang before 17 (the sanitizer build's clang 14) does not.
+template <class... Fs>
+Overloaded(Fs...) -> Overloaded<Fs...>;
 }  // namespace candela

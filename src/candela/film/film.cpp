@@ -1,9 +1,16 @@
 #include "candela/film/film.h"
 
+#include "candela/core/check.h"
+
 namespace candela {
 
 Film::Film(int width, int height)
     : width_(width), height_(height), sums_(size_t(width) * size_t(height), {0.0, 0.0, 0.0}) {}
+
+Film::Film(int width, int height, std::vector<PixelSum> sums)
+    : width_(width), height_(height), sums_(std::move(sums)) {
+    CANDELA_CHECK(sums_.size() == size_t(width) * size_t(height));
+}
 
 Image Film::resolve(uint32_t samples_per_pixel) const {
     Image img(width_, height_);

@@ -5,6 +5,7 @@
 #include <xmmintrin.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -16,6 +17,8 @@
 namespace candela {
 
 namespace {
+
+std::atomic<RayObserver*> g_ray_observer{nullptr};
 
 // Embree reports failures through a per-device error code; the ones it can raise here (out of
 // memory, invalid arguments) are internal failures, not bad input. (Throwing from its error
@@ -224,6 +227,8 @@ std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl_->scene, &context, &rh);
+    if (RayObserver* o = g_ray_observer.load(std::memory_order_relaxed)) [[unlikely]]
+        o->observe(ray, false, rh.hit.geomID != RTC_INVALID_GEOMETRY_ID);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     if (impl_->shapes[rh.hit.geomID].kind == ShapeKind::kSphere) return impl_->make_sphere_hit(rh, ray);
     return impl_->make_triangle_hit(rh);
@@ -234,6 +239,8 @@ bool Accelerator::occluded(const Ray& ray) const {
     rtcInitIntersectContext(&context);
     RTCRay r = to_embree(ray);
     rtcOccluded1(impl_->scene, &context, &r);
+    if (RayObserver* o = g_ray_observer.load(std::memory_order_relaxed)) [[unlikely]]
+        o->observe(ray, true, r.tfar == -kInfinity);
     return r.tfar == -kInfinity;
 }
 
@@ -247,6 +254,10 @@ Bounds3f Accelerator::bounds() const {
     }
     return out;
 }
+
+RTCSceneTy* Accelerator::embree_scene() const { return impl_->scene; }
+
+void set_ray_observer(RayObserver* observer) { g_ray_observer.store(observer); }
 
 void enable_flush_denormals() {
     _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);

@@ -14,7 +14,24 @@
 #include "candela/math/bounds.h"
 #include "candela/math/ray.h"
 
+struct RTCSceneTy;  // Embree's scene handle (RTCScene), for benchmarks that trace it directly
+
 namespace candela {
+
+// Sees every query the accelerator answers, after answering it: bench/record_rays.cpp records
+// the renderer's own rays this way. Called from every render thread, so it must be thread-safe.
+class RayObserver {
+  public:
+    // `occlusion`: an occluded() query (else intersect()); `hit`: it found something.
+    virtual void observe(const Ray& ray, bool occlusion, bool hit) = 0;
+
+  protected:
+    ~RayObserver() = default;
+};
+
+// Installs `observer` for all accelerators and threads (null: off, the default; off costs one
+// relaxed atomic load and a branch per query). Not for use while a render is running.
+void set_ray_observer(RayObserver* observer);
 
 class Accelerator {
   public:
@@ -31,6 +48,8 @@ class Accelerator {
     bool occluded(const Ray& ray) const;
     // World bounds of all shapes.
     Bounds3f bounds() const;
+    // The Embree scene, built with the flags above, for benchmarks of Embree alone.
+    RTCSceneTy* embree_scene() const;
 
   private:
     struct Impl;

@@ -9,6 +9,7 @@
 #include <ImfRgbaFile.h>
 #include <ImfStdIO.h>
 #include <ImfTestFile.h>
+#include <openexr.h>
 
 #include <cstddef>
 #include <exception>
@@ -17,6 +18,7 @@
 
 #include "candela/core/atomic_file.h"
 #include "candela/core/error.h"
+#include "candela/image/exr_attributes.h"
 #include "candela/image/image_formats.h"
 
 namespace candela::image_formats {
@@ -77,6 +79,91 @@ void read_channels(Imf::InputFile& in, const fs::path& file, Image& image) {
         for (Rgb& p : image.pixels) p = Rgb(p.r);
 }
 
+// OpenEXR 3.1's C++ reader allocates every header attribute at the size the file declares
+// before reading it (Header::readFrom), so a corrupt 100-byte file could make it allocate 2 GiB
+// (found by fuzz/exr_fuzzer.cpp). Its C core (OpenEXRCore) parses headers with every size checked
+// against the file's, so the core parses the headers first and a file it complains about is
+// refused with its first message, before the C++ reader sees it. (For a bad attribute size the
+// core reports the error, skips the attribute and still returns success, so the message counts.)
+thread_local std::string* t_core_message = nullptr;
+
+void keep_core_message(exr_const_context_t, exr_result_t, const char* message) {
+    if (t_core_message && t_core_message->empty() && message) *t_core_message = message;
+}
+
+void check_headers(const fs::path& file) {
+    std::string message;
+    t_core_message = &message;
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    init.error_handler_fn = keep_core_message;
+    init.max_image_width = init.max_image_height = int(kMaxImageSide);
+    init.max_tile_width = init.max_tile_height = int(kMaxImageSide);
+    exr_context_t context = nullptr;
+    const exr_result_t result = exr_start_read(&context, file.c_str(), &init);
+    exr_finish(&context);
+    t_core_message = nullptr;
+    if (result != EXR_ERR_SUCCESS || !message.empty())
+        fail(file, "corrupt OpenEXR header: " + (message.empty() ? std::string(exr_get_default_error_message(result))
+                                                                 : message));
+}
+
+// OpenEXR checks headers against these limits (Header::sanityCheck) before it sizes anything by
+// them, such as the table of chunk offsets; set once, as they are process-wide.
+void limit_image_size() {
+    static const bool once = [] {
+        Imf::Header::setMaxImageSize(int(kMaxImageSide), int(kMaxImageSide));
+        Imf::Header::setMaxTileSize(int(kMaxImageSide), int(kMaxImageSide));
+        return true;
+    }();
+    (void)once;
+}
+
+// Every chunk of pixel data the C++ reader will read (part 0's scanline blocks, or its level-0
+// tiles) must be in the file. That reader finds a missing chunk only in readPixels, after the
+// image is allocated: a 130 KB file whose header claims 16384x16384 made us allocate 3 GiB.
+// The core reads each chunk's offset and leader here and checks them against the file's size.
+void check_chunks_present(const fs::path& file) {
+    std::string message;
+    t_core_message = &message;
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    init.error_handler_fn = keep_core_message;
+    exr_context_t context = nullptr;
+    exr_result_t result = exr_start_read(&context, file.c_str(), &init);
+    exr_storage_t storage = EXR_STORAGE_SCANLINE;
+    if (result == EXR_ERR_SUCCESS) result = exr_get_storage(context, 0, &storage);
+    int64_t first_missing = -1;  // the first row (or tile row) whose chunk is missing
+    exr_chunk_info_t chunk{};
+    if (result == EXR_ERR_SUCCESS && storage == EXR_STORAGE_SCANLINE) {
+        exr_attr_box2i_t dw{};
+        int32_t lines = 0;
+        result = exr_get_data_window(context, 0, &dw);
+        if (result == EXR_ERR_SUCCESS) result = exr_get_scanlines_per_chunk(context, 0, &lines);
+        for (int64_t y = dw.min.y; result == EXR_ERR_SUCCESS && lines > 0 && y <= dw.max.y; y += lines) {
+            result = exr_read_scanline_chunk_info(context, 0, int(y), &chunk);
+            if (result != EXR_ERR_SUCCESS) first_missing = y;
+        }
+    } else if (result == EXR_ERR_SUCCESS && storage == EXR_STORAGE_TILED) {
+        int32_t tile_w = 0, tile_h = 0, level_w = 0, level_h = 0;
+        result = exr_get_tile_sizes(context, 0, 0, 0, &tile_w, &tile_h);
+        if (result == EXR_ERR_SUCCESS) result = exr_get_level_sizes(context, 0, 0, 0, &level_w, &level_h);
+        const int64_t tiles_x = tile_w > 0 ? (int64_t(level_w) + tile_w - 1) / tile_w : 0;
+        const int64_t tiles_y = tile_h > 0 ? (int64_t(level_h) + tile_h - 1) / tile_h : 0;
+        for (int64_t ty = 0; result == EXR_ERR_SUCCESS && ty < tiles_y; ++ty)
+            for (int64_t tx = 0; result == EXR_ERR_SUCCESS && tx < tiles_x; ++tx) {
+                result = exr_read_tile_chunk_info(context, 0, int(tx), int(ty), 0, 0, &chunk);
+                if (result != EXR_ERR_SUCCESS) first_missing = ty;
+            }
+    }
+    exr_finish(&context);
+    t_core_message = nullptr;
+    if (result == EXR_ERR_SUCCESS) return;
+    const std::string why = message.empty() ? std::string(exr_get_default_error_message(result)) : message;
+    fail(file, first_missing >= 0 ? "truncated or corrupt OpenEXR image: the pixel data of " +
+                                        std::string(storage == EXR_STORAGE_TILED ? "tile row " : "row ") +
+                                        std::to_string(first_missing) + " is missing (" + why + ")"
+                                  : "corrupt OpenEXR image: " + why);
+}
+
 }  // namespace
 
 Image read_exr(const fs::path& file) {
@@ -84,6 +171,10 @@ Image read_exr(const fs::path& file) {
     if (!Imf::isOpenExrFile(file.c_str(), tiled, deep, multi_part))
         fail(file, "not an OpenEXR image (bad magic number or truncated header)");
     if (deep) fail(file, "deep OpenEXR images are not supported");
+    check_headers(file);
+    check_exr_attributes(file, multi_part);
+    check_chunks_present(file);
+    limit_image_size();
     try {
         Imf::InputFile in(file.c_str());
         const Imath::Box2i dw = in.header().dataWindow();

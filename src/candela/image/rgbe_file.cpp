@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <string_view>
@@ -27,6 +28,7 @@ class RgbeReader {
 
     Image read() {
         read_header();
+        check_data_size();
         Image image(width_, height_);
         std::vector<unsigned char> scanline(size_t(width_) * 4);
         for (int y = 0; y < height_; ++y) {
@@ -62,6 +64,25 @@ class RgbeReader {
         check_dimensions(file_, width, height);
         width_ = int(width);
         height_ = int(height);
+    }
+
+    // Before the image is allocated: the rows the header declares must fit in what is left of the
+    // file, even at the best compression (runs of 127 pixels in 2 bytes, per component), so a
+    // 100-byte file claiming 65536x4096 is refused without allocating 3 GiB.
+    void check_data_size() const {
+        const uint64_t w = uint64_t(width_), h = uint64_t(height_);
+        const uint64_t left = bytes_.size() - pos_;
+        if (width_ < 8 || width_ >= 32768) {  // flat rows only: the row where the data ends is known
+            if (left / (4 * w) < h)
+                fail(file_, "truncated Radiance HDR image: data ends in row " + std::to_string(left / (4 * w)) +
+                                " of " + std::to_string(height_));
+            return;
+        }
+        const uint64_t min_row = std::min<uint64_t>(4 + 4 * 2 * ((w + 126) / 127), 4 * w);
+        if (left / min_row < h)
+            fail(file_, "truncated Radiance HDR image: " + std::to_string(width_) + "x" + std::to_string(height_) +
+                            " pixels need at least " + std::to_string(min_row * h) + " bytes of data, the file has " +
+                            std::to_string(left) + " after its header");
     }
 
     std::string_view line() {

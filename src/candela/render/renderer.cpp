@@ -7,16 +7,21 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <string>
+#include <utility>
 
 #include "candela/camera/perspective_camera.h"
+#include "candela/core/error.h"
 #include "candela/film/film.h"
 #include "candela/film/filter.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/lights/light_set.h"
 #include "candela/render/integrator.h"
+#include "candela/render/pass_schedule.h"
 #include "candela/render/progress.h"
-#include "candela/sampling/rng.h"
+#include "candela/sampling/sampler.h"
 #include "candela/scene/scene.h"
 
 namespace candela {
@@ -39,10 +44,45 @@ std::vector<Tile> make_tiles(int width, int height, int size) {
     return tiles;
 }
 
-// What each thread counts on its own; summed once at the end.
+// What each thread counts on its own. Rays are summed once at the end; dropped samples after
+// each complete pass (those of an abandoned pass are not in the image, so they do not count).
 struct ThreadTally {
     RayCounters rays;
     uint64_t dropped = 0;
+};
+
+// What every camera sample reads, shared by the render threads.
+struct SampleContext {
+    const PerspectiveCamera& camera;
+    const Integrator& integrator;
+    int width;
+    uint64_t seed;
+    SamplerType sampler_type;
+    FilterType filter;
+};
+
+// Camera sample `s` of pixel (x, y), added to the pixel's running sum, or dropped (counted) when
+// it is NaN or Inf. Its random numbers are a pure function of (pixel, s, seed), so the sum is the
+// same whichever thread computes it and however the samples are split into passes.
+void take_sample(const SampleContext& c, int x, int y, uint32_t s, PixelSum& sum, ThreadTally& tally) {
+    const uint64_t pixel = uint64_t(y) * uint64_t(c.width) + uint64_t(x);
+    Sampler sampler(c.sampler_type, pixel, s, c.seed);
+    Vec2f film_pos = Vec2f(float(x), float(y)) + sample_filter(c.filter, s, sampler.next_vec2f());
+    Rgb L = c.integrator.radiance(c.camera.generate_ray(film_pos), sampler, tally.rays);
+    if (!L.is_finite()) {
+        ++tally.dropped;
+        return;
+    }
+    add_to_sum(sum, L);
+}
+
+// A pass's samples [begin, end) for every pixel: each pixel's sum is read from `from`, the pass's
+// samples are added in index order, and the new sum is written to `to`. So `from` keeps the state
+// before the pass until the whole pass is done, and a pass abandoned halfway leaves no trace.
+struct Pass {
+    uint32_t begin = 0, end = 0;
+    const Film* from = nullptr;
+    Film* to = nullptr;
 };
 
 }  // namespace
@@ -59,6 +99,10 @@ LightSet build_light_set(const Scene& scene, const Accelerator& accel) {
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& options) {
+    return render(scene, options, RenderState{Film(scene.camera.width, scene.camera.height)});
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options, RenderState start) {
     RenderResult result;
     Clock::time_point build_start = Clock::now();
     Accelerator accel(scene.meshes, scene.spheres, scene.shapes);
@@ -69,57 +113,99 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     PerspectiveCamera camera(scene.camera);
     std::unique_ptr<Integrator> integrator = make_integrator(scene, accel, lights);
     const int width = camera.width(), height = camera.height();
+    if (start.film.width() != width || start.film.height() != height)
+        throw RenderError("render: the start state is " + std::to_string(start.film.width()) + "x" +
+                          std::to_string(start.film.height()) + ", the scene " + std::to_string(width) + "x" +
+                          std::to_string(height));
     const auto spp = uint32_t(scene.sampler.spp);
-    const uint64_t seed = scene.sampler.seed;
-    const FilterType filter = scene.film.filter;
+    const SampleContext context{camera, *integrator, width, scene.sampler.seed, scene.sampler.type, scene.film.filter};
+    const uint64_t pixels = uint64_t(width) * uint64_t(height);
 
-    Film film(width, height);
+    RenderState& state = result.state;
+    state = std::move(start);
+    const uint32_t start_samples = state.samples_done;
+    Film next;  // the second buffer of a pass (see Pass), allocated when there is one
     std::vector<Tile> tiles = make_tiles(width, height, std::max(1, options.tile_size));
     int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
     result.stats.threads = threads;
     tbb::enumerable_thread_specific<ThreadTally> tallies;
 
-    Clock::time_point render_start = Clock::now();
-    {
-        ProgressBar progress(uint64_t(width) * uint64_t(height) * spp, options.progress);
-        tbb::task_arena arena(threads);
+    // Why the pass in flight was abandoned, set by the first tile that notices.
+    std::atomic<RenderEnd> abandon{RenderEnd::kComplete};
+    auto check_stop = [&] {
+        if (abandon.load(std::memory_order_relaxed) != RenderEnd::kComplete) return true;
+        RenderEnd why = options.stop && options.stop()                          ? RenderEnd::kStopped
+                        : options.deadline && Clock::now() >= *options.deadline ? RenderEnd::kDeadline
+                                                                                : RenderEnd::kComplete;
+        if (why == RenderEnd::kComplete) return false;
+        RenderEnd none = RenderEnd::kComplete;
+        abandon.compare_exchange_strong(none, why);
+        return true;
+    };
+
+    // One pass over all tiles, in parallel; a stop seen before a tile abandons the rest.
+    auto run_pass = [&](tbb::task_arena& arena, const Pass& pass, ProgressBar& progress) {
+        const uint64_t n = pass.end - pass.begin;
         arena.execute([&] {
             tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
                 enable_flush_denormals();
                 ThreadTally& tally = tallies.local();
                 for (size_t t = r.begin(); t != r.end(); ++t) {
+                    if (check_stop()) return;
                     const Tile& tile = tiles[t];
                     uint64_t rays_before = tally.rays.total();
                     for (int y = tile.y0; y < tile.y1; ++y) {
                         for (int x = tile.x0; x < tile.x1; ++x) {
-                            uint64_t pixel = uint64_t(y) * uint64_t(width) + uint64_t(x);
-                            // Samples in index order, each from its own stream: the pixel's sum is
-                            // the same whichever thread computes it.
-                            for (uint32_t s = 0; s < spp; ++s) {
-                                Rng rng = Rng::for_sample(pixel, s, seed);
-                                Vec2f film_pos = Vec2f(float(x), float(y)) + sample_filter(filter, s, rng.next_vec2f());
-                                Rgb L = integrator->radiance(camera.generate_ray(film_pos), rng, tally.rays);
-                                if (!L.is_finite()) {
-                                    ++tally.dropped;
-                                    continue;
-                                }
-                                film.add_sample(x, y, L);
-                            }
+                            PixelSum sum = pass.from->sum(x, y);
+                            for (uint32_t s = pass.begin; s < pass.end; ++s) take_sample(context, x, y, s, sum, tally);
+                            pass.to->sum(x, y) = sum;
                         }
                     }
-                    uint64_t pixels = uint64_t(tile.x1 - tile.x0) * uint64_t(tile.y1 - tile.y0);
-                    progress.advance(pixels * spp, tally.rays.total() - rays_before);
+                    uint64_t tile_pixels = uint64_t(tile.x1 - tile.x0) * uint64_t(tile.y1 - tile.y0);
+                    progress.advance(tile_pixels * n, tally.rays.total() - rays_before);
                 }
             });
         });
+    };
+
+    Clock::time_point render_start = Clock::now();
+    {
+        ProgressBar progress(pixels * (spp - std::min(spp, start_samples)), options.progress);
+        tbb::task_arena arena(threads);
+        PassTiming previous;
+        while (state.samples_done < spp) {
+            if (check_stop()) break;
+            std::optional<double> seconds_left;
+            if (options.deadline)
+                seconds_left = std::chrono::duration<double>(*options.deadline - Clock::now()).count();
+            const uint32_t n =
+                next_pass_spp(previous, spp - state.samples_done, options.pass_seconds, seconds_left, options.pass_spp);
+            if (n == 0) {  // not one more sample per pixel fits before the deadline
+                abandon = RenderEnd::kDeadline;
+                break;
+            }
+            if (next.width() != width || next.height() != height) next = Film(width, height);
+            const Pass pass{state.samples_done, state.samples_done + n, &state.film, &next};
+            const Clock::time_point pass_start = Clock::now();
+            run_pass(arena, pass, progress);
+            uint64_t pass_dropped = 0;
+            for (ThreadTally& t : tallies) pass_dropped += std::exchange(t.dropped, 0);
+            if (abandon.load() != RenderEnd::kComplete) break;  // `next` is a mix of tiles: dropped
+
+            std::swap(state.film, next);
+            state.samples_done = pass.end;
+            state.dropped_samples += pass_dropped;
+            result.stats.dropped_samples += pass_dropped;
+            ++result.stats.passes;
+            previous = {n, seconds_since(pass_start)};
+            if (options.on_pass) options.on_pass(state);
+        }
     }
+    result.end = abandon.load();
     result.stats.render_seconds = seconds_since(render_start);
-    for (const ThreadTally& t : tallies) {
-        result.stats.rays += t.rays;
-        result.stats.dropped_samples += t.dropped;
-    }
-    result.stats.samples = uint64_t(width) * uint64_t(height) * spp;
-    result.image = film.resolve(spp);
+    for (const ThreadTally& t : tallies) result.stats.rays += t.rays;
+    result.stats.samples = pixels * (state.samples_done - start_samples);
+    result.image = state.film.resolve(state.samples_done);
     return result;
 }
 

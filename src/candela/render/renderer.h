@@ -1,10 +1,19 @@
 #pragma once
 // The Renderer facade: a loaded Scene in, an Image and statistics out. Builds the accelerator,
-// camera and integrator, then renders tiles in parallel with oneTBB.
+// camera and integrator, then renders in passes, each over all tiles in parallel with oneTBB.
+//
+// A pass takes samples [begin, end) of every pixel (sizes: pass_schedule.h). Between passes the
+// render can stop, meet a deadline or write a checkpoint; a stop inside a pass abandons it at
+// the next tile. Each pixel's samples are summed in index order whatever the passes, so the
+// image is bit-identical however a render was split, stopped and resumed.
+#include <chrono>
 #include <cstdint>
+#include <functional>
+#include <optional>
 
 #include "candela/image/image.h"
 #include "candela/render/ray_counters.h"
+#include "candela/render/render_state.h"
 
 namespace candela {
 
@@ -12,24 +21,46 @@ struct Scene;
 class Accelerator;
 class LightSet;
 
+// Every member has a default, so that designated initializers may leave any out.
 struct RenderOptions {
     int threads = 0;        // 0: all cores
     int tile_size = 16;     // pixels per tile side; does not change the image
     bool progress = false;  // draw a progress bar on stderr
+
+    // Asked between passes and before each tile, from any render thread (so it must be
+    // thread-safe, e.g. read an atomic flag a signal handler sets): true stops the render,
+    // abandoning the pass in flight.
+    std::function<bool()> stop = {};
+    // Stop when reached: passes are sized to end before it, a pass still running then is abandoned.
+    std::optional<std::chrono::steady_clock::time_point> deadline = {};
+    // Called on the calling thread with the state after each complete pass (periodic checkpoints).
+    std::function<void(const RenderState&)> on_pass = {};
+    double pass_seconds = 2.0;  // about how long a grown pass lasts
+    uint32_t pass_spp = 0;      // > 0: passes of exactly this many samples per pixel (tests)
+};
+
+// Why render() returned.
+enum class RenderEnd {
+    kComplete,  // scene.sampler.spp samples per pixel (or more, from the start state)
+    kStopped,   // options.stop said so
+    kDeadline,  // options.deadline passed
 };
 
 struct RenderStats {
     double build_seconds = 0;   // accelerator and light tables
     double render_seconds = 0;  // sampling only
-    uint64_t samples = 0;       // camera samples taken
-    uint64_t dropped_samples = 0;  // NaN or Inf samples, counted as zero and never written
-    RayCounters rays;
+    uint64_t samples = 0;       // camera samples taken in complete passes, in this call
+    uint64_t dropped_samples = 0;  // NaN or Inf samples among them, counted as zero and never written
+    RayCounters rays;           // all rays traced, abandoned passes included
     int threads = 0;
+    int passes = 0;             // complete passes, in this call
 };
 
 struct RenderResult {
-    Image image;
+    Image image;        // the mean of state's samples (black when it has none)
     RenderStats stats;
+    RenderState state;  // the sums after the last complete pass: what a checkpoint saves
+    RenderEnd end = RenderEnd::kComplete;
 };
 
 // The scene's lights: its emitting shapes and its environment, selected as the integrator settings
@@ -37,7 +68,13 @@ struct RenderResult {
 LightSet build_light_set(const Scene& scene, const Accelerator& accel);
 
 // Renders scene.sampler.spp samples per pixel. The image depends only on the scene (incl. its
-// seed), not on threads or tile_size.
+// seed), not on threads, tile_size or passes.
 RenderResult render(const Scene& scene, const RenderOptions& options);
+
+// Continues `start`, a state of the same scene (e.g. read from a checkpoint), up to
+// scene.sampler.spp samples per pixel; when it already has as many or more, renders nothing and
+// returns it. The result is bit-identical to an uninterrupted render. Throws RenderError when
+// start's film is not the scene's resolution.
+RenderResult render(const Scene& scene, const RenderOptions& options, RenderState start);
 
 }  // namespace candela

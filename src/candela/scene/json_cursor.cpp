@@ -54,6 +54,25 @@ bool is_literal_char(char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-';
 }
 
+// Words for the syntax errors people make most: comments, single quotes and numbers JSON does not
+// have, and text in another encoding than UTF-8 (nlohmann's message shows only where it stopped).
+std::string syntax_hint(std::string_view text, size_t offset, std::string_view message) {
+    std::string_view rest = text.substr(std::min(offset, text.size()));
+    if (rest.starts_with("//") || rest.starts_with("/*")) return " (JSON allows no comments)";
+    if (rest.starts_with('\'')) return " (JSON strings take double quotes)";
+    if (rest.starts_with('-') || rest.starts_with('+')) rest.remove_prefix(1);
+    for (std::string_view word : {"NaN", "nan", "Infinity", "infinity", "inf", "Inf"})
+        if (rest.starts_with(word)) return " (JSON has no NaN or Infinity; give a finite number)";
+    if (message.find("UTF-8") != std::string_view::npos) return " (scene files must be UTF-8)";
+    return "";
+}
+
+// UTF-16 text (Windows editors write it) fails on its first byte with an unhelpful message.
+bool looks_like_utf16(std::string_view text) {
+    return text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF") ||
+           (text.size() >= 2 && (text[0] == '\0' || text[1] == '\0'));
+}
+
 std::string_view number_at(std::string_view text, size_t offset) {
     size_t end = text.find_first_not_of("0123456789+-.eE", offset);
     return text.substr(offset, end == std::string_view::npos ? end : end - offset);
@@ -82,6 +101,10 @@ JsonDocument::JsonDocument(std::string text, std::string file)
         }
         return true;
     };
+    if (looks_like_utf16(text_))
+        throw SceneError(SourceLocation{file_, 1, 1, ""},
+                         "the file is UTF-16 text (it starts with a byte order mark or a NUL byte); "
+                         "scene files must be UTF-8");
     try {
         root_ = std::make_unique<Json>(Json::parse(text_, note_keys));
     } catch (const Json::parse_error& e) {
@@ -96,6 +119,7 @@ JsonDocument::JsonDocument(std::string text, std::string file)
         char bad = offset < text_.size() ? text_[offset] : '\0';
         if ((bad == ']' || bad == '}') && previous_token_char(text_, offset) == ',')
             message += " (JSON allows no comma after the last element)";
+        message += syntax_hint(text_, offset, message);
         throw SceneError(SourceLocation{file_, p.line, p.column, ""}, "JSON " + message);
     } catch (const Json::out_of_range& e) {
         // The parser throws out_of_range only for a number that overflows a double (1e400).

@@ -6,22 +6,23 @@
 #include <functional>
 #include <set>
 #include <system_error>
+#include <vector>
 
 namespace candela {
 
 namespace {
 
 constexpr size_t kNoOffset = size_t(-1);
-// Scene files are shallow; the limit only keeps a hostile file from exhausting the stack.
-constexpr int kMaxDepth = 512;
 
 // One value met by the scanner: its pointer, where it is, its raw text when it is a number, and
 // whether its key repeats an earlier key of the same object. Returning false stops the scan.
 using Visitor = std::function<bool(const std::string& pointer, JsonSpan span,
                                    std::string_view number, bool duplicate_key)>;
 
-// A recursive-descent walk over JSON text that reports every value, pre-order. It validates only
-// what it needs to find its way; it runs on error paths only, so it favours clarity over speed.
+// A walk over JSON text that reports every value, pre-order. It validates only what it needs to
+// find its way; it runs on error paths only, so it favours clarity over speed. It keeps the open
+// objects and arrays on a heap stack rather than recursing, so no nesting depth (a hostile file
+// of 100000 '[') can exhaust the call stack.
 class Scanner {
   public:
     Scanner(std::string_view text, Visitor visit) : text_(text), visit_(std::move(visit)) {
@@ -29,11 +30,45 @@ class Scanner {
     }
 
     void run() {
-        std::string pointer;
-        value(pointer, kNoOffset, false, 0);
+        Member next{kNoOffset, false};
+        for (;;) {
+            const Read read = value(next);
+            if (read == Read::kFailed) return;
+            if (read == Read::kOpened) continue;  // `next` is the new container's first member
+            // A complete value: leave every container it completes, then find the next member.
+            for (;;) {
+                if (open_.empty()) return;  // the root value is complete
+                Container& c = open_.back();
+                pointer_.resize(c.pointer_size);
+                skip_whitespace();
+                if (peek(c.is_object ? '}' : ']')) {
+                    ++pos_;
+                    open_.pop_back();
+                    continue;
+                }
+                if (!peek(',')) return;
+                ++pos_;
+                ++c.index;
+                if (!begin_member(c, next)) return;
+                break;
+            }
+        }
     }
 
   private:
+    // An object or array being read: where its members' pointers start, how many came before.
+    struct Container {
+        bool is_object;
+        size_t pointer_size;
+        size_t index = 0;
+        std::set<std::string> keys;
+    };
+    // What is known of the value about to be read: its key's offset and whether it repeats.
+    struct Member {
+        size_t key_offset;
+        bool duplicate_key;
+    };
+
     void skip_whitespace() {
         while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' ||
                                        text_[pos_] == '\n' || text_[pos_] == '\r'))
@@ -42,76 +77,55 @@ class Scanner {
 
     bool peek(char c) const { return pos_ < text_.size() && text_[pos_] == c; }
 
-    bool value(std::string& pointer, size_t key_offset, bool duplicate_key, int depth) {
+    enum class Read { kFailed, kComplete, kOpened };
+
+    // Reads one value at pos_: a scalar or an empty container whole (kComplete); of a non-empty
+    // object or array only the opening, pushing it and setting `next` to its first member
+    // (kOpened). kFailed stops the scan.
+    Read value(Member& next) {
         skip_whitespace();
-        if (pos_ >= text_.size() || depth > kMaxDepth) return false;
-        JsonSpan span{key_offset == kNoOffset ? pos_ : key_offset, pos_};
+        if (pos_ >= text_.size()) return Read::kFailed;
+        JsonSpan span{next.key_offset == kNoOffset ? pos_ : next.key_offset, pos_};
         char c = text_[pos_];
         std::string_view number;
         if (c == '-' || (c >= '0' && c <= '9')) number = number_token();
-        if (!visit_(pointer, span, number, duplicate_key)) return false;
-        if (!number.empty()) return true;
-        if (c == '{') return object(pointer, depth);
-        if (c == '[') return array(pointer, depth);
-        if (c == '"') return string(nullptr);
+        if (!visit_(pointer_, span, number, next.duplicate_key)) return Read::kFailed;
+        if (!number.empty()) return Read::kComplete;
+        if (c == '{' || c == '[') {
+            ++pos_;
+            skip_whitespace();
+            if (peek(c == '{' ? '}' : ']')) return ++pos_, Read::kComplete;
+            open_.push_back(Container{c == '{', pointer_.size(), 0, {}});
+            return begin_member(open_.back(), next) ? Read::kOpened : Read::kFailed;
+        }
+        if (c == '"') return string(nullptr) ? Read::kComplete : Read::kFailed;
         for (std::string_view literal : {"true", "false", "null"}) {
             if (text_.substr(pos_, literal.size()) == literal) {
                 pos_ += literal.size();
-                return true;
+                return Read::kComplete;
             }
         }
-        return false;
+        return Read::kFailed;
     }
 
-    bool object(std::string& pointer, int depth) {
-        ++pos_;
-        skip_whitespace();
-        if (peek('}')) return ++pos_, true;
-        std::set<std::string> seen;
-        const size_t base = pointer.size();
-        while (true) {
-            skip_whitespace();
-            size_t key_offset = pos_;
-            std::string key;
-            if (!peek('"') || !string(&key)) return false;
-            skip_whitespace();
-            if (!peek(':')) return false;
-            ++pos_;
-            bool duplicate = !seen.insert(key).second;
-            pointer += '/';
-            pointer += escape_pointer_token(key);
-            if (!value(pointer, key_offset, duplicate, depth + 1)) return false;
-            pointer.resize(base);
-            skip_whitespace();
-            if (peek(',')) {
-                ++pos_;
-            } else if (peek('}')) {
-                return ++pos_, true;
-            } else {
-                return false;
-            }
+    // Extends the pointer to member `c.index` of `c`; for an object reads its key and colon.
+    bool begin_member(Container& c, Member& next) {
+        pointer_ += '/';
+        if (!c.is_object) {
+            pointer_ += std::to_string(c.index);
+            next = {kNoOffset, false};
+            return true;
         }
-    }
-
-    bool array(std::string& pointer, int depth) {
-        ++pos_;
         skip_whitespace();
-        if (peek(']')) return ++pos_, true;
-        const size_t base = pointer.size();
-        for (size_t index = 0;; ++index) {
-            pointer += '/';
-            pointer += std::to_string(index);
-            if (!value(pointer, kNoOffset, false, depth + 1)) return false;
-            pointer.resize(base);
-            skip_whitespace();
-            if (peek(',')) {
-                ++pos_;
-            } else if (peek(']')) {
-                return ++pos_, true;
-            } else {
-                return false;
-            }
-        }
+        const size_t key_offset = pos_;
+        std::string key;
+        if (!peek('"') || !string(&key)) return false;
+        skip_whitespace();
+        if (!peek(':')) return false;
+        ++pos_;
+        next = {key_offset, !c.keys.insert(key).second};
+        pointer_ += escape_pointer_token(key);
+        return true;
     }
 
     std::string_view number_token() {
@@ -189,7 +203,10 @@ class Scanner {
     std::string_view text_;
     Visitor visit_;
     size_t pos_ = 0;
+    std::string pointer_;          // of the value being read
+    std::vector<Container> open_;  // the objects and arrays around it, outermost first
 };
+
 
 // The decimal order of magnitude of a JSON number token (1e400 -> 400, 0.002 -> -3), for telling
 // overflow from underflow: from_chars reports both as out of range, but nlohmann-json only

@@ -1,14 +1,18 @@
 #include "candela/scene/mesh_loader.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
-#include <fstream>
+#include <cstring>
 #include <string>
 #include <string_view>
-#include <system_error>
 
 #include "candela/core/error.h"
 #include "candela/scene/obj_loader.h"
@@ -17,7 +21,8 @@
 namespace candela {
 namespace {
 
-using MeshParser = TriangleMesh (*)(std::string_view bytes, const std::string& file_name);
+using MeshParser = TriangleMesh (*)(std::string_view bytes, const std::string& file_name,
+                                    const MeshSizeCheck& check);
 
 struct MeshFormat {
     std::string_view extension;  // lower case, with the dot
@@ -32,24 +37,49 @@ std::string lower_case(std::string s) {
     return s;
 }
 
-std::string read_file(const std::filesystem::path& file, const std::string& name) {
-    std::error_code ec;
-    const auto status = std::filesystem::status(file, ec);
-    if (!std::filesystem::exists(status))
-        throw SceneError(SourceLocation{name, 0, 0, {}}, "cannot read mesh file: no such file");
-    if (!std::filesystem::is_regular_file(status))
-        throw SceneError(SourceLocation{name, 0, 0, {}}, "cannot read mesh file: not a regular file");
-    std::ifstream in(file, std::ios::binary);
-    const auto size = std::filesystem::file_size(file, ec);
-    std::string bytes;
-    if (in && !ec) {
-        bytes.resize(size);
-        in.read(bytes.data(), static_cast<std::streamsize>(size));
-    }
-    if (!in || ec || static_cast<size_t>(in.gcount()) != size)
-        throw SceneError(SourceLocation{name, 0, 0, {}}, "cannot read mesh file: reading failed");
-    return bytes;
+[[noreturn]] void fail(const std::string& name, const std::string& message) {
+    throw SceneError(SourceLocation{name, 0, 0, {}}, message);
 }
+
+// The file's bytes, mapped rather than read: the page cache holds them, so a large file costs no
+// memory of its own, and a PLY whose header alone shows it too large is refused before its data
+// is touched.
+class MappedFile {
+  public:
+    MappedFile(const std::filesystem::path& file, const std::string& name) {
+        // O_NONBLOCK: opening a FIFO must not wait for a writer (it is refused below).
+        const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+        if (fd < 0)
+            fail(name, fmt::format("cannot read mesh file: {}", errno == ENOENT ? "no such file" : std::strerror(errno)));
+        struct stat st {};
+        if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+            ::close(fd);
+            fail(name, S_ISDIR(st.st_mode) ? "cannot read mesh file: not a regular file (a folder)"
+                                           : "cannot read mesh file: not a regular file");
+        }
+        size_ = static_cast<size_t>(st.st_size);
+        if (size_ > 0) {
+            void* data = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
+            const int error = errno;
+            ::close(fd);
+            if (data == MAP_FAILED) fail(name, fmt::format("cannot read mesh file: {}", std::strerror(error)));
+            data_ = static_cast<const char*>(data);
+        } else {
+            ::close(fd);
+        }
+    }
+    ~MappedFile() {
+        if (data_) ::munmap(const_cast<char*>(data_), size_);
+    }
+    MappedFile(const MappedFile&) = delete;
+    MappedFile& operator=(const MappedFile&) = delete;
+
+    std::string_view bytes() const { return {data_ ? data_ : "", size_}; }
+
+  private:
+    const char* data_ = nullptr;
+    size_t size_ = 0;
+};
 
 // What both formats share once parsed: a mesh must have triangles and finite values, and its
 // normals are made unit length. A zero-length or non-finite normal has no direction to give, so
@@ -80,12 +110,13 @@ void finish(TriangleMesh& mesh, const std::string& name) {
 
 }  // namespace
 
-TriangleMesh load_mesh(const std::filesystem::path& file) {
+TriangleMesh load_mesh(const std::filesystem::path& file, const MeshSizeCheck& check) {
     const std::string name = file.string();
     const std::string extension = lower_case(file.extension().string());
     for (const MeshFormat& format : kMeshFormats) {
         if (format.extension != extension) continue;
-        TriangleMesh mesh = format.parse(read_file(file, name), name);
+        const MappedFile bytes(file, name);
+        TriangleMesh mesh = format.parse(bytes.bytes(), name, check);
         finish(mesh, name);
         return mesh;
     }

@@ -4,9 +4,11 @@
 #include <filesystem>
 
 #include "candela/geometry/triangle_mesh.h"
+#include "candela/scene/mesh_size.h"
 
 namespace candela {
 
-TriangleMesh load_mesh(const std::filesystem::path& file);
+// `check`, when given, sees the mesh's size before it is built, and may throw to refuse it.
+TriangleMesh load_mesh(const std::filesystem::path& file, const MeshSizeCheck& check = {});
 
 }  // namespace candela

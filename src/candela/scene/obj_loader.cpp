@@ -4,6 +4,9 @@
 #include <tiny_obj_loader.h>
 
 #include <cctype>
+#include <charconv>
+#include <climits>
+#include <cmath>
 #include <cstdint>
 #include <istream>
 #include <streambuf>
@@ -25,16 +28,10 @@ class MemoryStreamBuf : public std::streambuf {
     }
 };
 
-struct FaceLine {
-    int line;
-    size_t corners;
-};
-
-// The `f` statements of an OBJ text in order, with their line numbers, splitting lines as
-// tinyobjloader does ("\n", "\r\n" or a lone "\r"). tinyobjloader keeps no line per face, so this
-// second pass runs only to locate an error.
-std::vector<FaceLine> scan_face_lines(std::string_view text) {
-    std::vector<FaceLine> faces;
+// Calls visit(line_number, line) for each line of `text`, splitting lines as tinyobjloader does
+// ("\n", "\r\n" or a lone "\r").
+template <class Visit>
+void for_each_line(std::string_view text, Visit visit) {
     int line = 0;
     size_t pos = 0;
     while (pos < text.size()) {
@@ -42,38 +39,125 @@ std::vector<FaceLine> scan_face_lines(std::string_view text) {
         if (end == std::string_view::npos) end = text.size();
         const std::string_view s = text.substr(pos, end - pos);
         pos = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
-        ++line;
-        const size_t f = s.find_first_not_of(" \t");
-        if (f == std::string_view::npos || s[f] != 'f' || f + 1 >= s.size() ||
-            (s[f + 1] != ' ' && s[f + 1] != '\t'))
-            continue;
+        visit(++line, s);
+    }
+}
+
+// The whitespace-separated words of one statement, up to a '#' comment.
+class Words {
+  public:
+    explicit Words(std::string_view line) : line_(line.substr(0, line.find('#'))) {}
+    std::string_view next() {
+        while (pos_ < line_.size() && is_space(line_[pos_])) ++pos_;
+        const size_t start = pos_;
+        while (pos_ < line_.size() && !is_space(line_[pos_])) ++pos_;
+        return line_.substr(start, pos_ - start);
+    }
+
+  private:
+    static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+    std::string_view line_;
+    size_t pos_ = 0;
+};
+
+// Checks the statements tinyobjloader would read leniently (it takes "abc" or a missing
+// coordinate as 0, and a face index beyond int range wraps) and counts what the mesh will hold.
+// One pass over the text, before tinyobjloader allocates anything.
+class ObjSurvey {
+  public:
+    ObjSurvey(std::string_view text, const std::string& file) : file_(file) {
+        for_each_line(text, [&](int line, std::string_view s) { statement(line, s); });
+        size_.normals = normal_count_ > 0;
+        size_.uvs = uv_count_ > 0;
+    }
+    const MeshSize& size() const { return size_; }
+
+  private:
+    void statement(int line, std::string_view s) {
+        Words words(s);
+        const std::string_view keyword = words.next();
+        if (keyword == "v") {
+            numbers(line, words, 3, "a vertex position (v x y z)");
+            ++size_.vertices;
+        } else if (keyword == "vn") {
+            numbers(line, words, 3, "a normal (vn x y z)");
+            ++normal_count_;
+        } else if (keyword == "vt") {
+            numbers(line, words, 1, "a texture coordinate (vt u v)");
+            ++uv_count_;
+        } else if (keyword == "f") {
+            face(line, words);
+        }
+    }
+
+    // At least `count` numbers, every one finite in float (the precision tinyobjloader keeps).
+    void numbers(int line, Words& words, size_t count, const char* what) const {
+        size_t found = 0;
+        for (std::string_view w = words.next(); !w.empty(); w = words.next(), ++found) {
+            const std::string_view digits = w.starts_with('+') ? w.substr(1) : w;
+            double value = 0.0;
+            const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+            if (ec == std::errc::invalid_argument || end != digits.data() + digits.size())
+                fail(line, fmt::format("{}: expected a number, got \"{}\"", what, w));
+            if (ec == std::errc::result_out_of_range || !std::isfinite(static_cast<float>(value)))
+                fail(line, fmt::format("{}: \"{}\" is not a finite number within float range", what, w));
+        }
+        if (found < count)
+            fail(line, fmt::format("{}: expected {} numbers, got {}", what, count, found));
+    }
+
+    // Corners v, v/vt, v//vn or v/vt/vn with integer indices in int range. Index 0 and indices
+    // beyond the statements are left to tinyobjloader and to ObjMeshBuilder::validate, which
+    // know which statements came before.
+    void face(int line, Words& words) {
         size_t corners = 0;
-        for (size_t i = f + 1; i < s.size(); ++i)
-            if (!std::isspace(static_cast<unsigned char>(s[i])) &&
-                std::isspace(static_cast<unsigned char>(s[i - 1])))
-                ++corners;
-        faces.push_back({line, corners});
+        for (std::string_view w = words.next(); !w.empty(); w = words.next(), ++corners) {
+            size_t parts = 0;
+            for (size_t start = 0; start <= w.size(); ++parts) {
+                size_t slash = w.find('/', start);
+                if (slash == std::string_view::npos) slash = w.size();
+                const std::string_view part = w.substr(start, slash - start);
+                start = slash + 1;
+                if (part.empty() && parts != 0) continue;  // "v//vn": no vt
+                int64_t index = 0;
+                const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), index);
+                if (ec == std::errc::result_out_of_range || (ec == std::errc() && end == part.data() + part.size() &&
+                                                             (index > INT32_MAX || index < -INT32_MAX)))
+                    fail(line, fmt::format("face index {} is out of range", part));
+                if (ec != std::errc() || end != part.data() + part.size() || parts >= 3)
+                    fail(line, fmt::format("face corner \"{}\" is not v, v/vt, v//vn or v/vt/vn with integer "
+                                           "indices",
+                                           w));
+            }
+        }
+        if (corners < 3) fail(line, fmt::format("a face has fewer than 3 vertices ({})", corners));
+        // tinyobjloader stores the corner count in an unsigned char.
+        if (corners > 255) fail(line, "a face has more than 255 vertices, the most tinyobjloader supports");
+        size_.corners += corners;
+        size_.triangles += corners - 2;
     }
-    return faces;
-}
 
-// The line of face number `face` among those tinyobjloader kept (three or more corners); 0 if
-// not found.
+    [[noreturn]] void fail(int line, std::string message) const {
+        throw SceneError(SourceLocation{file_, line, 0, {}}, std::move(message));
+    }
+
+    const std::string& file_;
+    MeshSize size_;
+    uint64_t normal_count_ = 0;
+    uint64_t uv_count_ = 0;
+};
+
+// The line of face number `face` among the file's `f` statements (all of which have three or
+// more corners once the survey passed); 0 if not found. tinyobjloader keeps no line per face, so
+// this second pass runs only to locate an error.
 int line_of_face(std::string_view text, size_t face) {
-    size_t kept = 0;
-    for (const FaceLine& f : scan_face_lines(text)) {
-        if (f.corners < 3) continue;
-        if (kept++ == face) return f.line;
-    }
-    return 0;
-}
-
-// The line of the first face whose corner count `bad` rejects; 0 if none.
-template <class Predicate>
-int line_of_first_face(std::string_view text, Predicate bad) {
-    for (const FaceLine& f : scan_face_lines(text))
-        if (bad(f.corners)) return f.line;
-    return 0;
+    int found = 0;
+    size_t seen = 0;
+    for_each_line(text, [&](int line, std::string_view s) {
+        Words words(s);
+        if (found == 0 && words.next() == "f" && seen++ == face) found = line;
+    });
+    return found;
 }
 
 // tinyobjloader's errors end in "line N.)"; pull N out so the location is structured.
@@ -202,7 +286,15 @@ class ObjMeshBuilder {
 
 }  // namespace
 
-TriangleMesh parse_obj(std::string_view text, const std::string& file_name) {
+TriangleMesh parse_obj(std::string_view text, const std::string& file_name, const MeshSizeCheck& check) {
+    const ObjSurvey survey(text, file_name);
+    if (survey.size().triangles == 0) return {};
+    if (survey.size().triangles > UINT32_MAX)
+        throw SceneError(SourceLocation{file_name, 0, 0, {}},
+                         fmt::format("{} triangles are more than the 2^32 - 1 a mesh can index",
+                                     survey.size().triangles));
+    if (check) check(survey.size());
+
     MemoryStreamBuf buffer(text);
     std::istream stream(&buffer);
     tinyobj::attrib_t attrib;
@@ -216,21 +308,6 @@ TriangleMesh parse_obj(std::string_view text, const std::string& file_name) {
                           /*readMatFn=*/nullptr, /*triangulate=*/false, /*default_vcols_fallback=*/false))
         throw SceneError(SourceLocation{file_name, line_in_message(error), 0, {}},
                          fmt::format("malformed OBJ statement (tinyobjloader: {})", trimmed(error)));
-
-    // tinyobjloader drops faces of fewer than 3 corners with a warning, and stores the corner
-    // count in an unsigned char, so a face of more than 255 corners would corrupt the index list.
-    if (warning.find("Degenerated face") != std::string::npos)
-        throw SceneError(
-            SourceLocation{file_name, line_of_first_face(text, [](size_t n) { return n < 3; }), 0, {}},
-            "a face has fewer than 3 vertices");
-    for (const tinyobj::shape_t& shape : shapes) {
-        size_t corners = 0;
-        for (const unsigned char n : shape.mesh.num_face_vertices) corners += n;
-        if (corners != shape.mesh.indices.size())
-            throw SceneError(
-                SourceLocation{file_name, line_of_first_face(text, [](size_t n) { return n > 255; }), 0, {}},
-                "a face has more than 255 vertices, the most tinyobjloader supports");
-    }
 
     ObjMeshBuilder builder(text, file_name, attrib);
     builder.validate(shapes);

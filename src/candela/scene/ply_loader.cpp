@@ -295,6 +295,10 @@ void read_vertices(Cursor& c, const PlyElement& e, const VertexLayout& layout, T
                 c.skip(p.type);
         }
         mesh.positions[i] = {v[kX], v[kY], v[kZ]};
+        // Here, where the record is known: a NaN or an overflow (1e300 read as a float) would
+        // otherwise surface as a NaN image far from its cause.
+        if (!is_finite(mesh.positions[i]))
+            c.fail(fmt::format("the vertex position ({}, {}, {}) is not finite", v[kX], v[kY], v[kZ]));
         if (layout.has_normals) mesh.normals[i] = {v[kNx], v[kNy], v[kNz]};
         if (layout.has_uvs) mesh.uvs[i] = {v[kU], v[kV]};
     }
@@ -385,7 +389,7 @@ const PlyElement& find_element(const PlyHeader& header, std::string_view name, c
 
 }  // namespace
 
-TriangleMesh parse_ply(std::string_view bytes, const std::string& file_name) {
+TriangleMesh parse_ply(std::string_view bytes, const std::string& file_name, const MeshSizeCheck& check) {
     const PlyHeader header = parse_ply_header(bytes, file_name);
     const PlyElement& vertices = find_element(header, "vertex", file_name);
     const PlyElement& faces = find_element(header, "face", file_name);
@@ -396,6 +400,11 @@ TriangleMesh parse_ply(std::string_view bytes, const std::string& file_name) {
                 fmt::format("{} vertices are more than the 2^32 - 1 a mesh can index", vertices.count));
     const std::string_view data = bytes.substr(header.data_offset);
     check_ply_counts_fit(header, data.size(), file_name);
+    // Embree numbers triangles with 32 bits, and every face makes at least one.
+    if (faces.count > std::numeric_limits<uint32_t>::max())
+        fail_at(file_name, faces.line,
+                fmt::format("{} faces are more than the 2^32 - 1 triangles a mesh can index", faces.count));
+    if (check) check(MeshSize{vertices.count, faces.count, 0, vertex.has_normals, vertex.has_uvs});
 
     if (header.format == PlyFormat::kAscii) {
         AsciiCursor c(data, header.end_line + 1, file_name);

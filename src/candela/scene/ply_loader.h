@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "candela/geometry/triangle_mesh.h"
+#include "candela/scene/mesh_size.h"
 
 namespace candela {
 
@@ -13,7 +14,9 @@ namespace candela {
 // texture_u/texture_v or texture_s/texture_t) and the face list `vertex_indices` (or
 // `vertex_index`); polygons are fan-triangulated (v0, vi, vi+1), keeping the file's winding.
 // Values are as stored: normals are not normalized (load_mesh does that). Throws SceneError naming
-// `file_name`, with the line for header and ascii errors, on any malformed or truncated input.
-TriangleMesh parse_ply(std::string_view bytes, const std::string& file_name);
+// `file_name`, with the line for header and ascii errors (the byte offset for binary ones), on any
+// malformed or truncated input, a non-finite position, or counts the file is too short to hold.
+// `check`, when given, sees the counts the header declares before any record is read.
+TriangleMesh parse_ply(std::string_view bytes, const std::string& file_name, const MeshSizeCheck& check = {});
 
 }  // namespace candela

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,7 @@ constexpr std::array<std::string_view, 1> kLightTypes = {"environment"};
 constexpr std::array<std::string_view, 2> kEnvironmentSamplingNames = {"importance", "uniform"};
 
 Image read_environment_image(const JsonCursor& file, const std::filesystem::path& folder,
-                             std::vector<std::string>& warnings) {
+                             std::vector<std::string>& warnings, MemoryBudget& budget) {
     std::string extension = std::filesystem::path(file.string()).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
@@ -30,6 +31,11 @@ Image read_environment_image(const JsonCursor& file, const std::filesystem::path
     Image image = load_referenced(file, [&] { return read_image(path); });
     if (image.width <= 0 || image.height <= 0)
         file.fail(fmt::format("environment image {} is empty", json_quoted(file.string())));
+    // The image readers cap the size (image_formats.h); what the light builds from it is charged.
+    if (auto refused = budget.charge(environment_memory_bytes(image.width, image.height),
+                                     fmt::format("environment image {} ({}x{})", json_quoted(file.string()),
+                                                 image.width, image.height)))
+        file.fail(*refused);
     // Any size maps onto the sphere, but one that is not 2:1 stretches its texels (and is often
     // not an equirectangular map at all, e.g. a cube cross): worth a word, not a failure.
     if (image.width != 2 * image.height) {
@@ -45,7 +51,7 @@ Image read_environment_image(const JsonCursor& file, const std::filesystem::path
 }
 
 EnvironmentSettings read_environment(JsonCursor c, const std::filesystem::path& folder,
-                                     std::vector<std::string>& warnings) {
+                                     std::vector<std::string>& warnings, MemoryBudget& budget) {
     // Either an image or one colour: both at once would leave one silently ignored.
     bool has_file = c.has("file"), has_color = c.has("color");
     if (has_file && has_color) c.get("color")->fail("give \"file\" or \"color\", not both");
@@ -65,21 +71,38 @@ EnvironmentSettings read_environment(JsonCursor c, const std::filesystem::path& 
         env.radiance.at(0, 0) = c.get("color")->colour(Bounds::at_least(0));
     }
     c.reject_unknown_keys();
-    if (file) env.radiance = read_environment_image(*file, folder, warnings);
+    if (file) env.radiance = read_environment_image(*file, folder, warnings, budget);
     return env;
+}
+
+// Why an environment gives no light, or nothing when it does.
+std::optional<std::string> why_dark(const EnvironmentSettings& env, bool from_file) {
+    if (env.scale == 0.0f) return "its scale is 0";
+    for (const Rgb& p : env.radiance.pixels)
+        if (!p.is_black()) return std::nullopt;
+    return from_file ? "its image is black" : "its color is 0";
 }
 
 }  // namespace
 
-void read_lights(const JsonCursor& lights, const std::filesystem::path& folder, Scene& scene) {
+void read_lights(const JsonCursor& lights, const std::filesystem::path& folder, Scene& scene,
+                 MemoryBudget& budget) {
     std::string first_environment;
     for (JsonCursor c : lights.elements()) {
         c.require("type").choice("light type", kLightTypes);
-        if (scene.environment)
+        if (!first_environment.empty())
             c.fail(fmt::format("a scene has at most one environment light, and {} is one",
                                first_environment));
-        scene.environment = read_environment(c, folder, scene.warnings);
+        const bool from_file = c.has("file");
+        EnvironmentSettings env = read_environment(c, folder, scene.warnings, budget);
         first_environment = c.pointer();
+        // A light of zero power would only take part in light selection to no effect; without
+        // it the image is the same (escaping rays see black either way).
+        if (auto dark = why_dark(env, from_file)) {
+            add_warning(scene, c, fmt::format("the environment light emits nothing ({}); it is ignored", *dark));
+            continue;
+        }
+        scene.environment = std::move(env);
     }
 }
 

@@ -6,17 +6,29 @@
 #include <filesystem>
 #include <string_view>
 
+#include <optional>
+
 #include "candela/core/error.h"
+#include "candela/scene/memory_budget.h"
 #include "candela/scene/scene.h"
 
 namespace candela {
 
+struct LoadOptions {
+    // What the scene may need in memory to render (film, meshes with their BVH, environment),
+    // checked as it loads, before each large allocation; by default what this process can have.
+    std::optional<MemoryLimit> memory_limit;
+};
+
 // Reads and loads `file`; the location of errors names it as given. Throws SceneError for a
-// missing or unreadable file as well.
-Scene load_scene(const std::filesystem::path& file);
+// missing or unreadable file as well, and for a scene that needs more memory than the limit.
+// Problems with a documented fallback (degenerate triangles skipped, a light that emits nothing,
+// no light at all) are not errors: they load and add a line to Scene::warnings.
+Scene load_scene(const std::filesystem::path& file, const LoadOptions& options = {});
 
 // Loads a scene from JSON text. `file` is the name errors show and the folder relative `file`
 // keys of meshes and images are resolved against (its parent); it need not exist.
-Scene load_scene_from_string(std::string_view json, const std::filesystem::path& file);
+Scene load_scene_from_string(std::string_view json, const std::filesystem::path& file,
+                             const LoadOptions& options = {});
 
 }  // namespace candela

@@ -8,6 +8,7 @@
 #include "candela/core/error.h"
 #include "candela/math/transform.h"
 #include "candela/scene/json_cursor.h"
+#include "candela/scene/memory_budget.h"
 #include "candela/scene/scene.h"
 
 namespace candela {
@@ -19,11 +20,17 @@ Transform read_transform(const JsonCursor& steps);
 // `materials`: name -> material, in file order.
 void read_materials(JsonCursor materials, Scene& scene);
 
-// `shapes`: meshes (loaded relative to `folder`), quads and spheres; needs the materials.
-void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene);
+// `shapes`: meshes (loaded relative to `folder`, each charged to `budget` before it is built),
+// quads and spheres; needs the materials.
+void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene,
+                 MemoryBudget& budget);
 
-// `lights`: at most one environment.
-void read_lights(const JsonCursor& lights, const std::filesystem::path& folder, Scene& scene);
+// `lights`: at most one environment, charged to `budget`.
+void read_lights(const JsonCursor& lights, const std::filesystem::path& folder, Scene& scene,
+                 MemoryBudget& budget);
+
+// Adds "file:line:col: /pointer: message", located at `at`, to scene.warnings.
+void add_warning(Scene& scene, const JsonCursor& at, const std::string& message);
 
 // The path a `file` key names, relative to `folder` unless absolute. Fails at the key when there
 // is no such regular file; `what` names the kind ("mesh", "environment image").

@@ -1,7 +1,10 @@
 // The `materials` and `shapes` parts of a scene file.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -107,11 +110,72 @@ TriangleMesh read_quad(JsonCursor& c) {
     return make_quad(p, e1, e2);
 }
 
-void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene) {
+// Triangles whose area is zero or not finite in float (repeated or collinear corners, or sizes
+// beyond float range, as the transformed mesh has them) cannot be hit and give an emitting mesh
+// nothing to sample: they are removed. Returns how many there were and the first one's index.
+struct Degenerate {
+    size_t count = 0;
+    size_t first = 0;
+};
+
+Degenerate remove_degenerate_triangles(TriangleMesh& mesh) {
+    Degenerate removed;
+    size_t kept = 0;
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        const uint32_t* i = &mesh.indices[3 * t];
+        const Vec3f& p0 = mesh.positions[i[0]];
+        const float area2 = length_squared(cross(mesh.positions[i[1]] - p0, mesh.positions[i[2]] - p0));
+        if (area2 > 0.0f && std::isfinite(area2)) {
+            std::copy(i, i + 3, &mesh.indices[3 * kept++]);
+        } else if (removed.count++ == 0) {
+            removed.first = t;
+        }
+    }
+    mesh.indices.resize(3 * kept);
+    return removed;
+}
+
+// A mesh file keeps its usable triangles, with a warning (a pbrt or Mitsuba user expects scanned
+// and exported meshes to contain a few); with none left it is an error, as an empty file is.
+void drop_degenerate_triangles(TriangleMesh& mesh, const JsonCursor& file, Scene& scene) {
+    const size_t total = mesh.triangle_count();
+    const Degenerate removed = remove_degenerate_triangles(mesh);
+    if (removed.count == 0) return;
+    if (removed.count == total)
+        file.fail(fmt::format("all {} triangles of mesh file {} have zero area (degenerate)", total,
+                              json_quoted(file.string())));
+    add_warning(scene, file,
+                fmt::format("mesh file {}: skipped {} of {} triangles that have zero area (degenerate; "
+                            "the first is triangle {})",
+                            json_quoted(file.string()), removed.count, total, removed.first + 1));
+}
+
+// What loading a mesh file will need, charged before it is built; refused, the error names the
+// file (load_referenced adds the scene key).
+MeshSizeCheck budget_check(const std::filesystem::path& path, const std::string& name,
+                           MemoryBudget& budget) {
+    return [&budget, path, name](const MeshSize& size) {
+        const std::string what = fmt::format("mesh file {} ({} vertices, {}{} triangles)", json_quoted(name),
+                                             size.vertices, size.corners == 0 ? "at least " : "",
+                                             size.triangles);
+        if (auto refused = budget.charge(mesh_memory_bytes(size.vertices, size.triangles, size.normals, size.uvs),
+                                         what, mesh_loading_memory_bytes(size.vertices, size.corners)))
+            throw SceneError(SourceLocation{path.string(), 0, 0, {}}, *refused);
+    };
+}
+
+void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene, MemoryBudget& budget) {
     std::string_view type = c.require("type").choice("shape type", kShapeTypes);
     Shape shape;
     shape.material = material_index(c.require("material"), scene);
-    if (auto v = c.get("emission")) shape.emission = v->colour(Bounds::at_least(0));
+    if (auto v = c.get("emission")) {
+        shape.emission = v->colour(Bounds::at_least(0));
+        // Zero is the default, so stating it is likely a light switched off or a mistake.
+        if (shape.emission.is_black())
+            add_warning(scene, *v,
+                        "emission 0: the shape is not a light (leave the key out for a shape that "
+                        "does not emit)");
+    }
     if (auto v = c.get("two_sided")) shape.two_sided = v->boolean();
     bool reverse_orientation = false;
     if (auto v = c.get("reverse_orientation")) reverse_orientation = v->boolean();
@@ -128,21 +192,36 @@ void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene)
     }
 
     Transform to_world;
-    if (auto v = c.get("transform")) to_world = read_transform(*v);
+    std::optional<JsonCursor> transform = c.get("transform");
+    if (transform) to_world = read_transform(*transform);
     TriangleMesh mesh;
     if (type == "quad") {
+        std::optional<JsonCursor> edge2 = c.get("edge2");
         mesh = read_quad(c);
         c.reject_unknown_keys();
+        transform_mesh(mesh, to_world, reverse_orientation);
+        // The edges were checked in double; in float, or scaled by the transform, the area may
+        // still vanish (edges of 1e-30 have a product that underflows).
+        if (remove_degenerate_triangles(mesh).count > 0)
+            (transform ? *transform : *edge2)
+                .fail(transform ? "the transform leaves the quad with no area in float precision"
+                                : "the quad has no area in float precision (its edges are too short)");
     } else {
         JsonCursor file = c.require("file");
         std::filesystem::path path = referenced_file(file, folder, "mesh");
         // Every key is checked before the (possibly slow) load.
         c.reject_unknown_keys();
-        mesh = load_referenced(file, [&] { return load_mesh(path); });
+        mesh = load_referenced(file, [&] { return load_mesh(path, budget_check(path, file.string(), budget)); });
         if (mesh.triangle_count() == 0)
             file.fail(fmt::format("mesh file {} has no triangles", json_quoted(file.string())));
+        transform_mesh(mesh, to_world, reverse_orientation);
+        for (size_t i = 0; i < mesh.positions.size(); ++i)
+            if (!is_finite(mesh.positions[i]))
+                (transform ? *transform : file)
+                    .fail(fmt::format("the transform moves vertex {} of mesh file {} beyond float range", i + 1,
+                                      json_quoted(file.string())));
+        drop_degenerate_triangles(mesh, file, scene);
     }
-    transform_mesh(mesh, to_world, reverse_orientation);
     shape.kind = ShapeKind::kMesh;
     shape.index = static_cast<uint32_t>(scene.meshes.size());
     scene.meshes.push_back(std::move(mesh));
@@ -158,8 +237,9 @@ void read_materials(JsonCursor materials, Scene& scene) {
     }
 }
 
-void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene) {
-    for (const JsonCursor& c : shapes.elements()) read_shape(c, folder, scene);
+void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene,
+                 MemoryBudget& budget) {
+    for (const JsonCursor& c : shapes.elements()) read_shape(c, folder, scene, budget);
 }
 
 }  // namespace candela

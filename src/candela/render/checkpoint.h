@@ -1,0 +1,69 @@
+#pragma once
+// Checkpoint files: a render's accumulated state, to continue it later (candela render SCENE
+// --resume FILE) with a bit-identical result.
+//
+// Format version 1. Integers are unsigned little-endian; a string is a u32 byte count (at most
+// 64) and its bytes; sums are IEEE 754 binary64, little-endian.
+//
+//   magic            8 bytes  "CNDLCKPT"
+//   format version   u32      1
+//   candela version  string   CANDELA_VERSION of the program that wrote it
+//   integrator       string   its name (path, bsdf, ...)
+//   sampler          string   its name (independent, sobol)
+//   content hash     u64      scene_content_hash (scene/content_hash.h)
+//   seed             u64
+//   width, height    u32, u32 1..32768 each
+//   samples done     u32      per pixel
+//   dropped samples  u64      NaN/Inf samples among them, counted as zero
+//   sums             f64 x 3 x width x height: per pixel, row-major from the top left, r g b,
+//                             exactly the Film's sums
+//   checksum         u64      Hash64 (core/hash64.h) of every byte before it
+//
+// Files are written atomically (a temporary file, then a rename), so a crash or a second
+// Ctrl-C never leaves a half-written checkpoint in place of a good one.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "candela/render/render_state.h"
+
+namespace candela {
+
+struct Scene;
+
+// What must be the same for a checkpoint to continue a render.
+struct RenderIdentity {
+    std::string candela_version;
+    std::string integrator;
+    std::string sampler;
+    uint64_t content_hash = 0;
+    uint64_t seed = 0;
+    int width = 0;
+    int height = 0;
+};
+
+struct Checkpoint {
+    RenderIdentity identity;
+    RenderState state;
+};
+
+// The identity of rendering `scene` (after command-line overrides) with this candela;
+// `content_hash` is scene_content_hash(scene).
+RenderIdentity render_identity(const Scene& scene, uint64_t content_hash);
+
+// Writes `state` with `identity` to `file`, atomically. Throws SceneError naming the file when
+// it cannot be written.
+void write_checkpoint(const std::filesystem::path& file, const RenderIdentity& identity, const RenderState& state);
+
+// Reads a checkpoint. A missing, unreadable, foreign (bad magic), newer-format, truncated or
+// corrupt (checksum, sizes, non-finite sums) file throws SceneError naming the file and what is
+// wrong.
+Checkpoint read_checkpoint(const std::filesystem::path& file);
+
+// Throws SceneError naming `file` and the first thing in which the checkpoint's identity differs
+// from the render's: candela version, resolution, seed, sampler, integrator, then the scene
+// content (the scene file or a file it names).
+void check_checkpoint_matches(const std::filesystem::path& file, const RenderIdentity& checkpoint,
+                              const RenderIdentity& render);
+
+}  // namespace candela

@@ -1,0 +1,177 @@
+#include "candela/scene/memory_budget.h"
+
+#include <fmt/format.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <fstream>
+#include <string>
+
+#include "candela/scene/scene.h"
+
+namespace candela {
+
+namespace {
+
+// Bytes per pixel: Film's three double sums (24), the resolved float image (12), and one output
+// image or checkpoint being encoded (12). A 4096x4096 render peaks at 36 B/pixel (ru_maxrss,
+// normals integrator, .exr/.png/.hdr output alike), so this leaves room for a checkpoint.
+constexpr uint64_t kFilmBytesPerPixel = 24 + 12 + 12;
+// Per vertex: the position and Embree's copy of it; normals and uvs when the mesh has them.
+constexpr uint64_t kPositionBytes = 12 + 12;
+constexpr uint64_t kNormalBytes = 12;
+constexpr uint64_t kUvBytes = 8;
+// Per triangle: its three indices and Embree's copy (12 + 12), the BVH with its build-time
+// references (96; a grid of 2M triangles peaked at about 70 B per triangle beyond the mesh, its
+// copies and the file), and the area table of an emitting mesh (8).
+constexpr uint64_t kTriangleBytes = 12 + 12 + 96 + 8;
+// While an OBJ loads: tinyobjloader's attribute arrays (up to 32 B per vertex for v, vn and vt)
+// and its index triples (12 B per corner), plus our corner-to-vertex hash map (about 64 B per
+// corner, an upper bound on the distinct ones).
+constexpr uint64_t kObjVertexLoadBytes = 32;
+constexpr uint64_t kObjCornerLoadBytes = 12 + 64;
+// Per environment texel: the loaded image, the light's copy (12 + 12) and its sampling tables
+// (weights and CDF, 4 + 4, and row overhead rounded up).
+constexpr uint64_t kEnvironmentBytesPerTexel = 12 + 12 + 12;
+
+// a * b, saturating instead of wrapping: a header may claim any count.
+uint64_t times(uint64_t a, uint64_t b) {
+    uint64_t product = 0;
+    return __builtin_mul_overflow(a, b, &product) ? UINT64_MAX : product;
+}
+
+uint64_t plus(uint64_t a, uint64_t b) {
+    uint64_t sum = 0;
+    return __builtin_add_overflow(a, b, &sum) ? UINT64_MAX : sum;
+}
+
+// A number from a one-line file such as /sys/fs/cgroup/memory.max ("max" means none).
+std::optional<uint64_t> read_limit_file(const char* path) {
+    std::ifstream in(path);
+    std::string word;
+    if (!(in >> word) || word == "max") return std::nullopt;
+    try {
+        return std::stoull(word);
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
+// The address space the process already uses (VmSize), which an RLIMIT_AS leaves less room to.
+uint64_t virtual_size_bytes() {
+    std::ifstream in("/proc/self/statm");
+    uint64_t pages = 0;
+    in >> pages;
+    return pages * uint64_t(sysconf(_SC_PAGESIZE));
+}
+
+}  // namespace
+
+MemoryLimit MemoryLimit::of_this_process() {
+    MemoryLimit limit{times(uint64_t(sysconf(_SC_PHYS_PAGES)), uint64_t(sysconf(_SC_PAGESIZE))),
+                      "this machine has"};
+    auto lower = [&](std::optional<uint64_t> candidate, const char* why) {
+        if (candidate && *candidate < limit.bytes) limit = {*candidate, why};
+    };
+    // cgroup v2, then v1 (which states "no limit" as a huge number, so it never wins).
+    lower(read_limit_file("/sys/fs/cgroup/memory.max"), "the container's memory limit is");
+    lower(read_limit_file("/sys/fs/cgroup/memory/memory.limit_in_bytes"), "the container's memory limit is");
+    rlimit r{};
+    if (getrlimit(RLIMIT_AS, &r) == 0 && r.rlim_cur != RLIM_INFINITY)
+        lower(uint64_t(r.rlim_cur) - std::min<uint64_t>(uint64_t(r.rlim_cur), virtual_size_bytes()),
+              "the address-space limit (ulimit -v) leaves");
+    if (getrlimit(RLIMIT_DATA, &r) == 0 && r.rlim_cur != RLIM_INFINITY)
+        lower(uint64_t(r.rlim_cur), "the data-size limit (ulimit -d) is");
+    return limit;
+}
+
+uint64_t film_memory_bytes(int width, int height) {
+    return times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))), kFilmBytesPerPixel);
+}
+
+uint64_t mesh_memory_bytes(uint64_t vertices, uint64_t triangles, bool normals, bool uvs) {
+    const uint64_t per_vertex = kPositionBytes + (normals ? kNormalBytes : 0) + (uvs ? kUvBytes : 0);
+    return plus(times(vertices, per_vertex), times(triangles, kTriangleBytes));
+}
+
+uint64_t mesh_loading_memory_bytes(uint64_t vertices, uint64_t corners) {
+    return plus(times(vertices, kObjVertexLoadBytes), times(corners, kObjCornerLoadBytes));
+}
+
+uint64_t environment_memory_bytes(int width, int height) {
+    return times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))), kEnvironmentBytesPerTexel);
+}
+
+uint64_t scene_memory_bytes(const Scene& scene) {
+    uint64_t bytes = film_memory_bytes(scene.camera.width, scene.camera.height);
+    for (const TriangleMesh& m : scene.meshes)
+        bytes = plus(bytes, mesh_memory_bytes(m.positions.size(), m.triangle_count(), !m.normals.empty(),
+                                              !m.uvs.empty()));
+    if (scene.environment)
+        bytes = plus(bytes, environment_memory_bytes(scene.environment->radiance.width,
+                                                     scene.environment->radiance.height));
+    return bytes;
+}
+
+std::string format_bytes(uint64_t bytes) {
+    constexpr const char* kUnits[] = {"KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+    if (bytes < 1024) return fmt::format("{} B", bytes);
+    double value = double(bytes) / 1024.0;
+    size_t unit = 0;
+    while (value >= 1024.0 && unit + 1 < std::size(kUnits)) {
+        value /= 1024.0;
+        ++unit;
+    }
+    return fmt::format("{:.1f} {}", value, kUnits[unit]);
+}
+
+std::optional<uint64_t> parse_byte_count(std::string_view text) {
+    uint64_t count = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), count);
+    if (ec != std::errc() || end == text.data()) return std::nullopt;
+    std::string_view unit = text.substr(size_t(end - text.data()));
+    if (unit.ends_with("iB")) {
+        unit.remove_suffix(2);
+    } else if (unit.ends_with('B')) {
+        unit.remove_suffix(1);
+    }
+    constexpr std::string_view kUnits = "KMGT";
+    int shift = 0;
+    if (!unit.empty()) {
+        const size_t k = kUnits.find(char(std::toupper(static_cast<unsigned char>(unit[0]))));
+        if (unit.size() != 1 || k == std::string_view::npos) return std::nullopt;
+        shift = 10 * int(k + 1);
+    }
+    if (count == 0 || count > (UINT64_MAX >> shift)) return std::nullopt;
+    return count << shift;
+}
+
+std::optional<std::string> memory_refusal(const Scene& scene, const MemoryLimit& limit) {
+    uint64_t triangles = 0;
+    for (const TriangleMesh& m : scene.meshes) triangles += m.triangle_count();
+    MemoryBudget budget(limit);
+    return budget.charge(scene_memory_bytes(scene),
+                         fmt::format("the scene at {}x{} pixels ({} triangles{})", scene.camera.width,
+                                     scene.camera.height, triangles,
+                                     scene.environment ? ", an environment map" : ""));
+}
+
+std::optional<std::string> MemoryBudget::charge(uint64_t bytes, std::string_view what, uint64_t transient) {
+    const uint64_t needed = plus(bytes, transient);
+    const uint64_t total = plus(used_, needed);
+    if (total <= limit_.bytes) {
+        used_ = plus(used_, bytes);
+        return std::nullopt;
+    }
+    // The total only when it says more than the part.
+    const std::string rest = format_bytes(total) == format_bytes(needed)
+                                 ? std::string()
+                                 : fmt::format(" ({} with what the scene holds already)", format_bytes(total));
+    return fmt::format("{} needs about {} of memory{}, but {} {}", what, format_bytes(needed), rest,
+                       limit_.source, format_bytes(limit_.bytes));
+}
+
+}  // namespace candela

@@ -1,0 +1,247 @@
+// Checkpoint files: an exact round trip, a clear refusal of anything that is not a checkpoint of
+// this render, and never a crash on a damaged file.
+#include "candela/render/checkpoint.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "candela/core/error.h"
+#include "candela/core/hash64.h"
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temp_file(const std::string& name) {
+    fs::path dir = fs::path(CANDELA_TEST_BINARY_DIR) / "checkpoint";
+    fs::create_directories(dir);
+    fs::remove(dir / name);
+    return dir / name;
+}
+
+std::string read_bytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+void write_bytes(const fs::path& file, const std::string& bytes) { std::ofstream(file, std::ios::binary) << bytes; }
+
+RenderIdentity identity() {
+    RenderIdentity id;
+    id.candela_version = "0.1.0";
+    id.integrator = "path";
+    id.sampler = "independent";
+    id.content_hash = 0x0123456789abcdefull;
+    id.seed = 42;
+    id.width = 5;
+    id.height = 3;
+    return id;
+}
+
+// Sums that need all 64 bits to round-trip: thirds, a denormal, a negative zero, huge values.
+RenderState state() {
+    std::vector<PixelSum> sums(15);
+    for (size_t i = 0; i < sums.size(); ++i)
+        sums[i] = {double(i) / 3.0, std::ldexp(1.0 + double(i), -1060), -double(i) * 1e300};
+    sums[0][0] = -0.0;
+    return RenderState{Film(5, 3, std::move(sums)), 17, 4};
+}
+
+// The header's size for identity(): magic, format version, three names, hash, seed, width,
+// height, samples done, dropped samples.
+constexpr size_t kHeaderBytes = 8 + 4 + (4 + 5) + (4 + 4) + (4 + 11) + 8 + 8 + 4 + 4 + 4 + 8;
+
+// The message of the SceneError that `f` throws; fails the test when it throws nothing.
+std::string error_of(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "expected a SceneError";
+    return "";
+}
+
+TEST(Checkpoint, RoundTripIsExact) {
+    const fs::path file = temp_file("round_trip.ckpt");
+    const RenderState written = state();
+    write_checkpoint(file, identity(), written);
+    const Checkpoint c = read_checkpoint(file);
+    const RenderIdentity id = identity();
+    EXPECT_EQ(c.identity.candela_version, id.candela_version);
+    EXPECT_EQ(c.identity.integrator, id.integrator);
+    EXPECT_EQ(c.identity.sampler, id.sampler);
+    EXPECT_EQ(c.identity.content_hash, id.content_hash);
+    EXPECT_EQ(c.identity.seed, id.seed);
+    EXPECT_EQ(c.identity.width, 5);
+    EXPECT_EQ(c.identity.height, 3);
+    EXPECT_EQ(c.state.samples_done, 17u);
+    EXPECT_EQ(c.state.dropped_samples, 4u);
+    ASSERT_EQ(c.state.film.width(), 5);
+    ASSERT_EQ(c.state.film.height(), 3);
+    ASSERT_EQ(c.state.film.sums().size(), written.film.sums().size());
+    EXPECT_EQ(std::memcmp(c.state.film.sums().data(), written.film.sums().data(),
+                          written.film.sums().size() * sizeof(PixelSum)),
+              0);
+    EXPECT_TRUE(std::signbit(c.state.film.sum(0, 0)[0]));
+    // The header, the sums, the checksum.
+    EXPECT_EQ(fs::file_size(file), kHeaderBytes + 15 * 24 + 8);
+}
+
+TEST(Checkpoint, LargeFilmRoundTripIsExact) {
+    // More than one 64 KiB block of sums, behind a header whose length is not a multiple of 8: the
+    // checksum is computed in pieces when writing and in one go when reading.
+    const int w = 100, h = 50;
+    std::vector<PixelSum> sums(size_t(w * h));
+    for (size_t i = 0; i < sums.size(); ++i) sums[i] = {double(i) / 7.0, double(i) * 1e-3, -double(i)};
+    RenderIdentity id = identity();
+    id.width = w;
+    id.height = h;
+    const fs::path file = temp_file("large.ckpt");
+    write_checkpoint(file, id, RenderState{Film(w, h, sums), 3, 0});
+    const Checkpoint c = read_checkpoint(file);
+    EXPECT_EQ(std::memcmp(c.state.film.sums().data(), sums.data(), sums.size() * sizeof(PixelSum)), 0);
+}
+
+// The checksum's hash (core/hash64.h): the same value however the bytes arrive.
+TEST(Hash64, SameValueHoweverTheBytesAreSplit) {
+    std::string bytes(61, '\0');
+    for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = char(i * 37 + 11);
+    Hash64 whole;
+    whole.add(bytes.data(), bytes.size());
+    for (size_t a = 0; a <= bytes.size(); ++a) {
+        for (size_t b = a; b <= bytes.size(); b += 3) {
+            Hash64 parts;
+            parts.add(bytes.data(), a);
+            parts.add(bytes.data() + a, b - a);
+            parts.add(bytes.data() + b, bytes.size() - b);
+            ASSERT_EQ(parts.value(), whole.value()) << a << ", " << b;
+        }
+    }
+    // And it tells apart inputs that differ in one bit or in trailing zero bytes.
+    Hash64 flipped, longer;
+    bytes[30] = char(bytes[30] ^ 1);
+    flipped.add(bytes.data(), bytes.size());
+    bytes[30] = char(bytes[30] ^ 1);
+    longer.add(bytes.data(), bytes.size());
+    longer.add(std::string_view("\0", 1));
+    EXPECT_NE(flipped.value(), whole.value());
+    EXPECT_NE(longer.value(), whole.value());
+}
+
+TEST(Checkpoint, MatchingIdentityIsAccepted) {
+    EXPECT_NO_THROW(check_checkpoint_matches("x.ckpt", identity(), identity()));
+}
+
+TEST(Checkpoint, EachDifferenceIsRefusedByName) {
+    struct Case {
+        std::function<void(RenderIdentity&)> change;
+        const char* expected;
+    };
+    const Case cases[] = {
+        {[](RenderIdentity& id) { id.candela_version = "0.0.9"; }, "written by candela 0.0.9, this is candela 0.1.0"},
+        {[](RenderIdentity& id) { id.width = 6; }, "the checkpoint is 6x3, this render 5x3"},
+        {[](RenderIdentity& id) { id.height = 4; }, "the checkpoint is 5x4, this render 5x3"},
+        {[](RenderIdentity& id) { id.seed = 7; }, "the checkpoint has seed 7, this render seed 42"},
+        {[](RenderIdentity& id) { id.sampler = "sobol"; }, "sampler sobol, this render independent"},
+        {[](RenderIdentity& id) { id.integrator = "bsdf"; }, "integrator bsdf, this render path"},
+        {[](RenderIdentity& id) { id.content_hash ^= 1; }, "a different scene"},
+    };
+    for (const Case& c : cases) {
+        RenderIdentity old = identity();
+        c.change(old);
+        std::string message = error_of([&] { check_checkpoint_matches("old.ckpt", old, identity()); });
+        EXPECT_EQ(message.rfind("old.ckpt: cannot resume: ", 0), 0u) << message;
+        EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+    }
+}
+
+TEST(Checkpoint, MissingFileOrFolderIsAClearError) {
+    const fs::path missing = temp_file("missing.ckpt");
+    EXPECT_NE(error_of([&] { read_checkpoint(missing); }).find("missing.ckpt: checkpoint not found"),
+              std::string::npos);
+    const fs::path folder = temp_file("folder.ckpt");
+    fs::create_directories(folder);
+    EXPECT_NE(error_of([&] { read_checkpoint(folder); }).find("is a folder"), std::string::npos);
+}
+
+TEST(Checkpoint, ForeignFilesAreRefused) {
+    const fs::path file = temp_file("foreign.ckpt");
+    write_bytes(file, "");
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("not a candela checkpoint: the file is empty"),
+              std::string::npos);
+    write_bytes(file, "PF\n5 3\n-1.0\n");  // an image, say
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("not a candela checkpoint"), std::string::npos);
+}
+
+TEST(Checkpoint, NewerFormatIsRefused) {
+    const fs::path file = temp_file("newer.ckpt");
+    write_checkpoint(file, identity(), state());
+    std::string bytes = read_bytes(file);
+    bytes[8] = 2;  // the format version's low byte
+    write_bytes(file, bytes);
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("format version 2; this candela reads version 1"),
+              std::string::npos);
+}
+
+TEST(Checkpoint, EveryTruncationIsAClearError) {
+    const fs::path file = temp_file("truncated.ckpt");
+    write_checkpoint(file, identity(), state());
+    const std::string bytes = read_bytes(file);
+    // Every length within the header, every seventh within the sums.
+    for (size_t size = 1; size < bytes.size(); size += size < kHeaderBytes ? 1 : 7) {
+        write_bytes(file, bytes.substr(0, size));
+        std::string message = error_of([&] { read_checkpoint(file); });
+        EXPECT_EQ(message.rfind(file.string() + ": truncated checkpoint", 0), 0u) << size << ": " << message;
+    }
+    write_bytes(file, bytes + "x");
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("1 more than a 5x3 checkpoint has"), std::string::npos);
+}
+
+TEST(Checkpoint, EveryCorruptByteIsAClearError) {
+    // Flipping the low or the high bit of any header byte, of every eleventh byte of the sums, or of
+    // any checksum byte: the magic, the version, a name's length, the size or the checksum
+    // catches it; never a crash or a silently wrong film.
+    const fs::path file = temp_file("corrupt.ckpt");
+    write_checkpoint(file, identity(), state());
+    const std::string bytes = read_bytes(file);
+    for (size_t at = 0; at < bytes.size(); at += at < kHeaderBytes || at + 8 >= bytes.size() ? 1 : 11) {
+        for (int bit : {0, 7}) {
+            std::string damaged = bytes;
+            damaged[at] = char(damaged[at] ^ (1 << bit));
+            write_bytes(file, damaged);
+            std::string message = error_of([&] { read_checkpoint(file); });
+            EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << at << ": " << message;
+        }
+    }
+}
+
+TEST(Checkpoint, HugeClaimedSizeIsRefusedWithoutAllocating) {
+    // A header claiming 32768 x 32768 pixels in a file of a few hundred bytes: truncated, found
+    // before any film is allocated.
+    const fs::path file = temp_file("huge.ckpt");
+    RenderIdentity id = identity();
+    write_checkpoint(file, id, state());
+    std::string bytes = read_bytes(file);
+    const size_t width_at = 8 + 4 + (4 + 5) + (4 + 4) + (4 + 11) + 8 + 8;
+    for (size_t i : {width_at, width_at + 4}) {
+        bytes[i] = 0;
+        bytes[i + 1] = char(0x80);  // 32768
+    }
+    write_bytes(file, bytes);
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("a 32768x32768 checkpoint has"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace candela
