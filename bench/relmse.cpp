@@ -1,12 +1,14 @@
 // candela_relmse TEST REFERENCE: the relative mean squared error of an image against a reference,
 // mean over pixels and channels of (test - ref)^2 / (ref^2 + 0.01) (the 0.01 keeps black pixels
 // from dominating, as in the denoising and rendering literature). Benchmarks use it to compare
-// estimators at equal sample counts.
+// estimators at equal sample counts. A TEST that is an integer multiple of REFERENCE in size is
+// box-downsampled first (bench/image_compare.h says why that is exact for box-filtered renders).
 #include <fmt/format.h>
 
 #include <cstdio>
 #include <exception>
 
+#include "bench/image_compare.h"
 #include "candela/image/image_io.h"
 
 int main(int argc, char** argv) {
@@ -17,18 +19,7 @@ int main(int argc, char** argv) {
     try {
         candela::Image test = candela::read_image(argv[1]);
         candela::Image ref = candela::read_image(argv[2]);
-        if (test.width != ref.width || test.height != ref.height) {
-            fmt::print(stderr, "candela_relmse: sizes differ: {}x{} vs {}x{}\n", test.width, test.height, ref.width,
-                       ref.height);
-            return 2;
-        }
-        double sum = 0.0;
-        for (size_t i = 0; i < ref.pixels.size(); ++i)
-            for (int c = 0; c < 3; ++c) {
-                double d = double(test.pixels[i][c]) - double(ref.pixels[i][c]);
-                sum += d * d / (double(ref.pixels[i][c]) * double(ref.pixels[i][c]) + 0.01);
-            }
-        fmt::print("{:.6g}\n", sum / (3.0 * double(ref.pixels.size())));
+        fmt::print("{:.6g}\n", candela::bench::relmse(test, ref));
         return 0;
     } catch (const std::exception& e) {
         fmt::print(stderr, "candela_relmse: {}\n", e.what());

@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # Configures and builds candela (Release) into build/. Extra arguments are build targets
-# (default: everything, tests included). Warnings are errors when CI is set.
+# (default: everything, tests included). Warnings are errors when CI is set. BUILD_DIR picks
+# another build folder (default build/); CMAKE_ARGS adds configure options.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 werror=OFF
 [ -n "${CI:-}" ] && werror=ON
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCANDELA_WERROR="$werror" >/dev/null
+build_dir="${BUILD_DIR:-build}"
+# shellcheck disable=SC2086 # CMAKE_ARGS is a list of options
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DCANDELA_WERROR="$werror" ${CMAKE_ARGS:-} >/dev/null
 targets=()
 for t in "$@"; do targets+=(--target "$t"); done
-cmake --build build -j "$(nproc)" "${targets[@]}"
+cmake --build "$build_dir" -j "$(nproc)" "${targets[@]}"
