@@ -29,6 +29,7 @@ TEST(OwenSobol, SecondDimensionMatchesTheKnownSequence) {
     for (int k = 0; k < 100000; ++k) {
         uint32_t i = rng.next_u32();
         ASSERT_EQ(sobol_dimension1(i), sobol_dimension1_reference(i)) << i;
+        ASSERT_EQ(sobol_dimension1_reversed(i), reverse_bits(sobol_dimension1_reference(i))) << i;
     }
     // Dimension 0 is van der Corput: 0, 1/2, 1/4, 3/4 ...
     EXPECT_EQ(sobol_dimension0(3) * 0x1p-32, 0.75);

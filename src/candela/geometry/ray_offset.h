@@ -10,6 +10,7 @@
 
 #include "candela/core/platform.h"
 #include "candela/geometry/surface_hit.h"
+#include "candela/math/next_float.h"
 #include "candela/math/ray.h"
 
 namespace candela {
@@ -31,9 +32,9 @@ CANDELA_HD inline Vec3f offset_ray_origin(const Vec3f& p, const Vec3f& p_error, 
     // plane through the origin) still leaves the surface: Embree counts hits at t = tmin = 0.
     for (int i = 0; i < 3; ++i) {
         if (n[i] > 0.0f)
-            po[i] = std::nextafter(po[i], kInfinity);
+            po[i] = next_float_up(po[i]);
         else if (n[i] < 0.0f)
-            po[i] = std::nextafter(po[i], -kInfinity);
+            po[i] = next_float_down(po[i]);
     }
     return po;
 }

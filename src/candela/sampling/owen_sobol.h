@@ -64,22 +64,35 @@ CANDELA_HD constexpr uint32_t sobol_dimension1_reference(uint32_t index) {
 namespace detail {
 // The generator matrix of dimension 1 applied to each byte of the index on its own: the xor of
 // four lookups replaces a loop over 32 bits (shuffled indices use all of them).
+// Bit reversal is linear over xor, so the tables can as well hold the reversed values (what Owen
+// scrambling works on) and save a reversal per sample.
 struct SobolByteTables {
     uint32_t t[4][256];
 };
-constexpr SobolByteTables make_sobol_byte_tables() {
+constexpr SobolByteTables make_sobol_byte_tables(bool reversed) {
     SobolByteTables tables{};
     for (uint32_t byte = 0; byte < 4; ++byte)
-        for (uint32_t value = 0; value < 256; ++value)
-            tables.t[byte][value] = sobol_dimension1_reference(value << (8u * byte));
+        for (uint32_t value = 0; value < 256; ++value) {
+            uint32_t v = sobol_dimension1_reference(value << (8u * byte));
+            tables.t[byte][value] = reversed ? reverse_bits(v) : v;
+        }
     return tables;
 }
-inline constexpr SobolByteTables kSobolByteTables = make_sobol_byte_tables();
+inline constexpr SobolByteTables kSobolByteTables = make_sobol_byte_tables(false);
+inline constexpr SobolByteTables kSobolReversedByteTables = make_sobol_byte_tables(true);
+
+CANDELA_HD constexpr uint32_t apply_byte_tables(const SobolByteTables& tables, uint32_t index) {
+    const auto& t = tables.t;
+    return t[0][index & 0xffu] ^ t[1][(index >> 8u) & 0xffu] ^ t[2][(index >> 16u) & 0xffu] ^ t[3][index >> 24u];
+}
 }  // namespace detail
 
 CANDELA_HD constexpr uint32_t sobol_dimension1(uint32_t index) {
-    const auto& t = detail::kSobolByteTables.t;
-    return t[0][index & 0xffu] ^ t[1][(index >> 8u) & 0xffu] ^ t[2][(index >> 16u) & 0xffu] ^ t[3][index >> 24u];
+    return detail::apply_byte_tables(detail::kSobolByteTables, index);
+}
+// reverse_bits(sobol_dimension1(index)).
+CANDELA_HD constexpr uint32_t sobol_dimension1_reversed(uint32_t index) {
+    return detail::apply_byte_tables(detail::kSobolReversedByteTables, index);
 }
 
 }  // namespace candela

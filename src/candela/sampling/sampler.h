@@ -36,6 +36,7 @@ class Sampler {
             rng_ = Rng::for_sample(pixel_index, sample_index, seed);
         else
             pixel_key_ = mix_bits(mix_bits(seed) ^ pixel_index);
+        reversed_index_ = reverse_bits(sample_index);
     }
 
     // A uniform number in [0, 1), never 1.0.
@@ -54,7 +55,7 @@ class Sampler {
         // multiplicative hash of them gives a third, unrelated one.
         uint32_t y_seed = (uint32_t(key) ^ uint32_t(key >> 32)) * 0x9e3779b9u + 0x7f4a7c15u;
         return {u32_to_unit_float(scrambled_dimension0(i, uint32_t(key >> 32))),
-                u32_to_unit_float(nested_uniform_scramble(sobol_dimension1(i), y_seed))};
+                u32_to_unit_float(reverse_bits(laine_karras_permutation(sobol_dimension1_reversed(i), y_seed)))};
     }
 
     CANDELA_HD SamplerType type() const { return type_; }
@@ -67,8 +68,9 @@ class Sampler {
     // scrambled like a fraction: bit k of the result depends on bits k and above. The first 2^m
     // indices have zeros from bit m up, so they map to one aligned block of 2^m points of the
     // sequence (in scrambled order), and an aligned block of Sobol points is a net.
+    // (nested_uniform_scramble(index_, seed), with the first reversal done once per sample.)
     CANDELA_HD uint32_t shuffled_index(uint64_t key) const {
-        return nested_uniform_scramble(index_, uint32_t(key));
+        return reverse_bits(laine_karras_permutation(reversed_index_, uint32_t(key)));
     }
 
     // nested_uniform_scramble(sobol_dimension0(i), seed) without the two reversals that cancel.
@@ -78,6 +80,7 @@ class Sampler {
 
     SamplerType type_;
     uint32_t index_;
+    uint32_t reversed_index_;
     uint32_t request_ = 0;
     uint64_t pixel_key_ = 0;
     Rng rng_;
