@@ -105,7 +105,7 @@ TEST(ResourceLimits, FilmBeyondTheLimitIsRefusedAtTheResolutionKey) {
     EXPECT_EQ(e.where().line, 2);
     EXPECT_EQ(e.where().column, 28);
     EXPECT_EQ(e.where().json_pointer, "/camera/resolution");
-    EXPECT_EQ(e.message(), "a 32768x32768 film needs about 48.0 GiB of memory, but the test's limit is 8.0 GiB");
+    EXPECT_EQ(e.message(), "a 32768x32768 film needs about 72.0 GiB of memory, but the test's limit is 8.0 GiB");
 }
 
 TEST(ResourceLimits, DefaultResolutionIsCheckedToo) {
@@ -178,7 +178,7 @@ TEST(ResourceLimits, CliRefusesAResolutionFlagBeyondTheMemoryLimit) {
     const CliResult r = run_candela("render " + cornell + " --resolution 32768x32768 --memory-limit 8G -o " +
                                     out.string());
     expect_one_line_error(r, "--resolution 32768x32768: the scene at 32768x32768 pixels (");
-    EXPECT_NE(r.err.find("needs about 48.0 GiB of memory, but --memory-limit is 8.0 GiB"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("needs about 72.0 GiB of memory, but --memory-limit is 8.0 GiB"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out));
 }
 
@@ -186,7 +186,7 @@ TEST(ResourceLimits, CliRefusesASceneResolutionBeyondTheMemoryLimit) {
     const fs::path dir = temp_dir("cli_scene");
     const fs::path scene = write_file(dir / "scene.json", "{\n  \"camera\": {\"resolution\": [32768, 32768]}\n}\n");
     expect_one_line_error(run_candela("render " + scene.string() + " --memory-limit 8G -o " + (dir / "x.png").string()),
-                          scene.string() + ":2:28: /camera/resolution: a 32768x32768 film needs about 48.0 GiB");
+                          scene.string() + ":2:28: /camera/resolution: a 32768x32768 film needs about 72.0 GiB");
 }
 
 TEST(ResourceLimits, CliRefusesAHugePlyWithoutReadingIt) {

@@ -18,10 +18,10 @@ constexpr uint64_t kGiB = uint64_t(1) << 30;
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
-TEST(MemoryEstimate, FilmTakes48BytesPerPixel) {
-    EXPECT_EQ(film_memory_bytes(640, 480), uint64_t(640) * 480 * 48);
-    // The largest film a scene may ask for: 32768^2 pixels, 48 GiB.
-    EXPECT_EQ(film_memory_bytes(32768, 32768), 48 * kGiB);
+TEST(MemoryEstimate, FilmTakes72BytesPerPixel) {
+    EXPECT_EQ(film_memory_bytes(640, 480), uint64_t(640) * 480 * 72);
+    // The largest film a scene may ask for: 32768^2 pixels, 72 GiB.
+    EXPECT_EQ(film_memory_bytes(32768, 32768), 72 * kGiB);
     EXPECT_EQ(film_memory_bytes(0, 480), 0u);
 }
 

@@ -16,10 +16,11 @@ namespace candela {
 
 namespace {
 
-// Bytes per pixel: Film's three double sums (24), the resolved float image (12), and one output
-// image or checkpoint being encoded (12). A 4096x4096 render peaks at 36 B/pixel (ru_maxrss,
-// normals integrator, .exr/.png/.hdr output alike), so this leaves room for a checkpoint.
-constexpr uint64_t kFilmBytesPerPixel = 24 + 12 + 12;
+// Bytes per pixel: the film's three double sums twice (24 + 24: a pass reads the saved sums and
+// writes a second film, swapped when the pass is complete, so a stop never saves half a pass), the
+// resolved float image (12), and one output image being encoded (12). A resume also holds the
+// checkpoint's sums while reading them (24), which the same bound covers with the output's room.
+constexpr uint64_t kFilmBytesPerPixel = 24 + 24 + 12 + 12;
 // Per vertex: the position and Embree's copy of it; normals and uvs when the mesh has them.
 constexpr uint64_t kPositionBytes = 12 + 12;
 constexpr uint64_t kNormalBytes = 12;
