@@ -112,13 +112,13 @@ TEST(ResourceLimits, DefaultResolutionIsCheckedToo) {
     const fs::path scene = write_file(temp_dir("default_film") / "scene.json", "{}\n");
     const SceneError e = load_error(scene, MemoryLimit{1 << 20, "the test's limit is"});
     EXPECT_EQ(e.where().line, 1);
-    EXPECT_EQ(e.message(), "a 512x512 film needs about 12.0 MiB of memory, but the test's limit is 1.0 MiB");
+    EXPECT_EQ(e.message(), "a 512x512 film needs about 18.0 MiB of memory, but the test's limit is 1.0 MiB");
 }
 
 TEST(ResourceLimits, ObjMeshIsRefusedAfterItsSurveyBeforeItIsBuilt) {
     const fs::path cube = fs::path(CANDELA_TEST_DATA_DIR) / "meshes" / "cube.obj";
     const fs::path scene = write_file(temp_dir("obj") / "scene.json", mesh_scene(cube));
-    const SceneError e = load_error(scene, MemoryLimit{14 << 10, "the test's limit is"});
+    const SceneError e = load_error(scene, MemoryLimit{20 << 10, "the test's limit is"});
     EXPECT_EQ(e.where().file, cube.string());
     EXPECT_NE(e.message().find("mesh file \"" + cube.string() + "\" (8 vertices, 12 triangles) needs about"),
               std::string::npos)
@@ -161,7 +161,7 @@ TEST(ResourceLimits, EnvironmentMapIsCharged) {
                                       "\"environment\", \"file\": \"" + sky.string() + "\"}]\n}\n");
     const SceneError e = load_error(scene, MemoryLimit{100, "the test's limit is"});
     EXPECT_EQ(e.where().json_pointer, "/lights/0/file");
-    EXPECT_NE(e.message().find("(2x1) needs about 72 B of memory (120 B with what the scene holds already)"),
+    EXPECT_NE(e.message().find("(2x1) needs about 72 B of memory (144 B with what the scene holds already)"),
               std::string::npos)
         << e.message();
 }
