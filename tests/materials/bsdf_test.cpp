@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <type_traits>
 
 #include "candela/materials/material.h"
 #include "candela/sampling/rng.h"
@@ -125,6 +126,37 @@ TEST(Bsdf, IsDeltaOnlyWhenEveryLobeIs) {
     EXPECT_TRUE(bsdf_of({SpecularTransmissionLobe{}}).is_delta_only());
     EXPECT_FALSE(bsdf_of({SpecularReflectionLobe{}, LambertianLobe{}}).is_delta_only());
     EXPECT_FALSE(bsdf_of({LambertianLobe{}}).is_delta_only());
+}
+
+// The integrators skip the lobe-choice random number when uses_choice() is false, so a lobe that
+// says it does not read uc must sample the same direction for any uc; and one that says it does
+// must be seen to (for some wo, two values of uc give different samples).
+TEST(Bsdf, UsesChoiceOnlyWhenALobeReadsIt) {
+    Rng rng(5, 9);
+    for (const LobeCase& c : kLobeCases) {
+        const bool uses = visit([](const auto& lobe) { return bool(std::decay_t<decltype(lobe)>::kUsesChoice); }, c.lobe);
+        EXPECT_EQ(bsdf_of({c.lobe}).uses_choice(), uses) << c.name;
+        bool differed = false;
+        for (const Vec3f& wo : probe_directions()) {
+            for (int k = 0; k < 64; ++k) {
+                Vec2f u(rng.next_float(), rng.next_float());
+                auto a = visit([&](const auto& lobe) { return lobe.sample(wo, 0.02f, u, kRadiance); }, c.lobe);
+                auto b = visit([&](const auto& lobe) { return lobe.sample(wo, 0.98f, u, kRadiance); }, c.lobe);
+                const bool same = a.has_value() == b.has_value() && (!a || (a->wi == b->wi && a->f == b->f && a->pdf == b->pdf));
+                if (!uses) {
+                    ASSERT_TRUE(same) << c.name << ": sample() depends on uc";
+                }
+                differed = differed || !same;
+            }
+        }
+        if (uses) {
+            EXPECT_TRUE(differed) << c.name << ": kUsesChoice, but uc never changed a sample";
+        }
+    }
+    // Several lobes: uc picks one of them.
+    EXPECT_TRUE(bsdf_of({LambertianLobe{}, LambertianLobe{}}).uses_choice());
+    EXPECT_TRUE(bsdf_of({LambertianLobe{}, SpecularReflectionLobe{}}).uses_choice());
+    EXPECT_FALSE(Bsdf{}.uses_choice());
 }
 
 // ---- materials

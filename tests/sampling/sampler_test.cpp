@@ -122,6 +122,27 @@ TEST(Sampler, PixelsSeedsAndRequestsAreDecorrelated) {
     EXPECT_EQ(seen.size(), 500u);
 }
 
+// A skipped request takes its place in the order without being computed: every other request
+// gets the number it gets when nothing is skipped.
+TEST(Sampler, SkippedRequestsLeaveTheOthersUnchanged) {
+    for (SamplerType type : {SamplerType::kIndependent, SamplerType::kSobol}) {
+        Sampler all(type, 77, 5, 3), skipping(type, 77, 5, 3);
+        for (int bounce = 0; bounce < 6; ++bounce) {
+            all.next_float();
+            skipping.skip_float();
+            EXPECT_EQ(all.next_vec2f(), skipping.next_vec2f());
+            EXPECT_EQ(all.next_float(), skipping.next_float());
+            all.next_vec2f();
+            skipping.skip_vec2f();
+            EXPECT_EQ(all.next_float(), skipping.next_float());
+        }
+        // A control: not skipping shifts every later request (so the checks above can fail).
+        Sampler a(type, 77, 5, 3), b(type, 77, 5, 3);
+        a.next_float();
+        EXPECT_NE(a.next_vec2f(), b.next_vec2f());
+    }
+}
+
 TEST(Sampler, SobolIsDeterministicAndInTheUnitSquare) {
     for (uint32_t i = 0; i < 1000; ++i) {
         Sampler a(SamplerType::kSobol, 9, i, 1), b(SamplerType::kSobol, 9, i, 1);

@@ -3,6 +3,8 @@
 // of the whole mixture (the one-sample "balance" combination of the lobes' strategies).
 #include "candela/materials/bsdf.h"
 
+#include <type_traits>
+
 #include "candela/math/constants.h"
 
 namespace candela {
@@ -52,6 +54,11 @@ CANDELA_HD bool Bsdf::is_delta_only() const {
     for (uint32_t k = 0; k < lobe_count; ++k)
         if (!visit([](const auto& lobe) { return lobe.is_delta(); }, lobes[k])) return false;
     return true;
+}
+
+CANDELA_HD bool Bsdf::uses_choice() const {
+    if (lobe_count != 1) return lobe_count > 1;
+    return visit([](const auto& lobe) { return bool(std::decay_t<decltype(lobe)>::kUsesChoice); }, lobes[0]);
 }
 
 CANDELA_HD Rgb Bsdf::albedo() const {

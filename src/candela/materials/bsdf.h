@@ -28,6 +28,8 @@ struct Bsdf {
     CANDELA_HD std::optional<BsdfSample> sample(const Vec3f& wo, float uc, const Vec2f& u, TransportMode mode) const;
     // True when every lobe is a delta (light sampling is pointless then).
     CANDELA_HD bool is_delta_only() const;
+    // Whether sample() reads uc: to choose among several lobes, or inside the one lobe.
+    CANDELA_HD bool uses_choice() const;
     // The colour the `albedo` debug integrator shows: the sum of the lobes' reflectance/tint.
     CANDELA_HD Rgb albedo() const;
 };

@@ -22,6 +22,9 @@ concept BsdfLobeType = requires(const T& lobe, Vec3f wo, Vec3f wi, float uc, Vec
     { lobe.sample(wo, uc, u, mode) } -> std::same_as<std::optional<BsdfSample>>;
     // True when the lobe scatters into isolated directions only (mirror, smooth glass).
     { lobe.is_delta() } -> std::same_as<bool>;
+    // Whether sample() reads uc. When no lobe of a BSDF does, the integrator need not compute
+    // that random number (Sampler::skip_float keeps the later ones where they were).
+    { T::kUsesChoice } -> std::convertible_to<bool>;
     // The lobe's colour for the `albedo` debug view: its reflectance or tint.
     { lobe.albedo() } -> std::same_as<Rgb>;
 };

@@ -60,6 +60,7 @@ struct FresnelSpecularLobe {
         s.eta = eta_rel;
         return s;
     }
+    static constexpr bool kUsesChoice = true;
     CANDELA_HD bool is_delta() const { return true; }
     CANDELA_HD Rgb albedo() const { return tint; }
 };

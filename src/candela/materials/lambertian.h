@@ -34,6 +34,7 @@ struct LambertianLobe {
         s.pdf = pdf(wo, wi);
         return s;
     }
+    static constexpr bool kUsesChoice = false;
     CANDELA_HD bool is_delta() const { return false; }
     CANDELA_HD Rgb albedo() const { return reflectance; }
 };

@@ -27,6 +27,7 @@ struct SpecularReflectionLobe {
         s.is_delta = true;
         return s;
     }
+    static constexpr bool kUsesChoice = false;
     CANDELA_HD bool is_delta() const { return true; }
     CANDELA_HD Rgb albedo() const { return reflectance; }
 };

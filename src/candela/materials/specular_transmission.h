@@ -38,6 +38,7 @@ struct SpecularTransmissionLobe {
         s.eta = eta_rel;
         return s;
     }
+    static constexpr bool kUsesChoice = false;
     CANDELA_HD bool is_delta() const { return true; }
     CANDELA_HD Rgb albedo() const { return tint; }
 };

@@ -40,8 +40,12 @@ inline float power_heuristic(float pdf_a, float pdf_b) {
 // path inside glass is not killed for being compressed); a fixed probability when the settings
 // give one (GAMES101's 0.8).
 inline bool survive_russian_roulette(Rgb& beta, float eta_scale, int bounces, const IntegratorSettings& s, Sampler& sampler) {
-    float u = sampler.next_float();  // drawn every bounce so later dimensions do not shift
-    if (bounces <= s.rr_depth) return true;
+    // A request every bounce, so later dimensions do not shift; computed only when it is used.
+    if (bounces <= s.rr_depth) {
+        sampler.skip_float();
+        return true;
+    }
+    float u = sampler.next_float();
     float survive = s.rr_probability > 0.0f ? s.rr_probability : std::min(1.0f, (beta * eta_scale).max_component());
     if (survive <= 0.0f || u >= survive) return false;
     beta = beta / survive;
@@ -52,9 +56,13 @@ inline bool survive_russian_roulette(Rgb& beta, float eta_scale, int bounces, co
 // BSDF sampling when `mis`. Counts its shadow ray. Black for delta-only BSDFs.
 inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, const Accelerator& accel, bool mis,
                                Sampler& sampler, RayCounters& counters) {
+    if (v.bsdf.is_delta_only() || lights.empty()) {
+        sampler.skip_float();
+        sampler.skip_vec2f();
+        return Rgb(0.0f);
+    }
     float uc = sampler.next_float();
     Vec2f u = sampler.next_vec2f();
-    if (v.bsdf.is_delta_only() || lights.empty()) return Rgb(0.0f);
     std::optional<LightSample> ls = lights.sample(v.hit.p, uc, u);
     if (!ls || ls->pdf <= 0.0f || ls->Le.is_black()) return Rgb(0.0f);
     Vec3f wi = v.frame.to_local(ls->wi);
@@ -71,7 +79,11 @@ inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, cons
 // Samples the BSDF for the path's next direction and moves the path there: beta *= f |cos| / pdf
 // and `ray` becomes the spawned ray. Returns the sample, or nullopt when the path ends here.
 inline std::optional<BsdfSample> continue_path(const PathVertex& v, Sampler& sampler, Rgb& beta, Ray& ray) {
-    float uc = sampler.next_float();
+    float uc = 0.0f;  // read only by BSDFs that choose (Bsdf::uses_choice)
+    if (v.bsdf.uses_choice())
+        uc = sampler.next_float();
+    else
+        sampler.skip_float();
     Vec2f u = sampler.next_vec2f();
     std::optional<BsdfSample> bs = v.bsdf.sample(v.wo, uc, u, TransportMode::kRadiance);
     if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) return std::nullopt;

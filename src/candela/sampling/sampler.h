@@ -8,6 +8,9 @@
 //                  1D  BSDF lobe choice, 2D BSDF direction
 //                  1D  Russian roulette
 //
+// A request whose number a decision does not need is skipped (skip_float, skip_vec2f) rather
+// than computed: it still takes its place in the order.
+//
 // Two kinds (scene key sampler.type):
 //  - independent: PCG32 from Rng::for_sample(pixel, sample, seed), as before: every number
 //    independent of every other.
@@ -56,6 +59,24 @@ class Sampler {
         uint32_t y_seed = (uint32_t(key) ^ uint32_t(key >> 32)) * 0x9e3779b9u + 0x7f4a7c15u;
         return {u32_to_unit_float(scrambled_dimension0(i, uint32_t(key >> 32))),
                 u32_to_unit_float(reverse_bits(laine_karras_permutation(sobol_dimension1_reversed(i), y_seed)))};
+    }
+
+    // The request next_float() or next_vec2f() would answer, skipped without computing it: for
+    // numbers a decision does not need this time (Russian roulette before rr_depth, the lobe
+    // choice of a one-lobe BSDF). Every later request gets the number it would have got.
+    CANDELA_HD void skip_float() {
+        if (type_ == SamplerType::kIndependent)
+            rng_.next_u32();
+        else
+            ++request_;
+    }
+    CANDELA_HD void skip_vec2f() {
+        if (type_ == SamplerType::kIndependent) {
+            rng_.next_u32();
+            rng_.next_u32();
+        } else {
+            ++request_;
+        }
     }
 
     CANDELA_HD SamplerType type() const { return type_; }
