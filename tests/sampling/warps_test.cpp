@@ -3,6 +3,7 @@
 // distributions themselves are tested by chi-square in warps_stat_test.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -73,6 +74,20 @@ TEST(Warps, ConcentricDiskStaysInTheDiskAndMapsTheCentreToTheOrigin) {
     Vec2f edge = sample_concentric_disk(Vec2f(kOneMinusEpsilon, 0.5f));  // middle of the right edge
     EXPECT_NEAR(edge.x, 1.0f, 1e-6f);
     EXPECT_NEAR(edge.y, 0.0f, 1e-6f);
+}
+
+// The concentric map's own cos and sin agree with the double-precision functions to float
+// rounding (a few 1e-8) over the whole range, endpoints included.
+TEST(Warps, QuarterPiCosSinMatchesTheLibrary) {
+    double worst = 0.0;
+    for (int k = -100000; k <= 100000; ++k) {
+        float t = float(k) / 100000.0f;
+        Vec2f cs = cos_sin_quarter_pi(t);
+        double angle = 0.25 * kPiD * double(t);
+        worst = std::max({worst, std::abs(double(cs.x) - std::cos(angle)), std::abs(double(cs.y) - std::sin(angle))});
+    }
+    EXPECT_LT(worst, 1.2e-7);  // two float ulps at 1 (the float angle itself is off by one ulp)
+    EXPECT_EQ(cos_sin_quarter_pi(0.0f), Vec2f(1.0f, 0.0f));
 }
 
 TEST(Warps, TriangleBarycentricsAreNonNegativeAndSumToOne) {

@@ -13,22 +13,30 @@ namespace candela {
 
 // ---- unit disk -------------------------------------------------------------------------------
 
+// cos and sin of (pi/4) t for t in [-1, 1], by their Taylor series to degree 10 and 9: on
+// |angle| <= pi/4 the first dropped term is below 2e-9, so the result is std::cos/std::sin to
+// within float rounding, without libm's range reduction (which was 2% of a render's time).
+CANDELA_HD inline Vec2f cos_sin_quarter_pi(float t) {
+    float x = kPiOver4 * t, x2 = x * x;
+    float c = 1.0f + x2 * (-1.0f / 2 + x2 * (1.0f / 24 + x2 * (-1.0f / 720 + x2 * (1.0f / 40320 + x2 * (-1.0f / 3628800)))));
+    float s = x * (1.0f + x2 * (-1.0f / 6 + x2 * (1.0f / 120 + x2 * (-1.0f / 5040 + x2 * (1.0f / 362880)))));
+    return {c, s};
+}
+
 // Uniform point on the unit disk by Shirley and Chiu's concentric map (1997, "A Low Distortion
 // Map Between Disk and Square"): it keeps strata compact, unlike the polar r = sqrt(u) map.
 CANDELA_HD inline Vec2f sample_concentric_disk(Vec2f u) {
     float a = 2.0f * u.x - 1.0f;
     float b = 2.0f * u.y - 1.0f;
     if (a == 0.0f && b == 0.0f) return {0.0f, 0.0f};
-    // Concentric squares map to concentric circles; the larger coordinate picks the wedge.
-    float r, phi;
+    // Concentric squares map to concentric circles; the larger coordinate picks the wedge. The
+    // angle is (pi/4) (b/a) in the first, pi/2 - (pi/4) (a/b) in the second: cos and sin swap.
     if (std::abs(a) > std::abs(b)) {
-        r = a;
-        phi = kPiOver4 * (b / a);
-    } else {
-        r = b;
-        phi = kPiOver2 - kPiOver4 * (a / b);
+        Vec2f cs = cos_sin_quarter_pi(b / a);
+        return {a * cs.x, a * cs.y};
     }
-    return {r * std::cos(phi), r * std::sin(phi)};
+    Vec2f cs = cos_sin_quarter_pi(a / b);
+    return {b * cs.y, b * cs.x};
 }
 // Per unit area of the plane: 1/pi inside the unit disk.
 CANDELA_HD inline float concentric_disk_pdf(Vec2f p) {
