@@ -36,6 +36,15 @@ RenderResult render_checked(const Scene& scene) {
     return r;
 }
 
+// The scene under test: rendered as the CLI does (render_checked) with no sample dropped, then its
+// per-pixel moments for the z-tests, again with none dropped.
+test::RenderMoments checked_moments(const Scene& scene) {
+    EXPECT_EQ(render_checked(scene).stats.dropped_samples, 0u);
+    test::RenderMoments m = test::render_moments(scene);
+    EXPECT_EQ(m.dropped, 0u);
+    return m;
+}
+
 // `scene` with every length multiplied by `scale`: geometry and camera.
 Scene scaled(Scene scene, float scale) {
     for (TriangleMesh& mesh : scene.meshes)
@@ -67,11 +76,8 @@ TEST(AdversarialScenes, GlassOfIndexOneIsInvisible) {
     glass.materials.push_back(make_dielectric(1.0f));
     glass.material_names.push_back("ior1");
     test::add_sphere(glass, {0.1, -0.3, 0.0}, 0.6, uint32_t(glass.materials.size() - 1));
-    EXPECT_EQ(render_checked(glass).stats.dropped_samples, 0u);
-
-    const test::RenderMoments m_glass = test::render_moments(glass);
+    const test::RenderMoments m_glass = checked_moments(glass);
     const test::RenderMoments m_empty = test::render_moments(empty);
-    EXPECT_EQ(m_glass.dropped, 0u);
     const test::ZTestFamily family = compare(m_glass, m_empty);
     EXPECT_TRUE(family.passed()) << family.summary();
 
@@ -194,11 +200,8 @@ TEST_P(ScaledCornellBox, RendersTheUnitBoxImage) {
     const Scene unit = GetParam().scene(kSize, kSize, GetParam().spp);
     Scene big_or_small = scaled(unit, GetParam().scale);
     big_or_small.sampler.seed = unit.sampler.seed + 1;
-    EXPECT_EQ(render_checked(big_or_small).stats.dropped_samples, 0u);
-
+    const test::RenderMoments m_scaled = checked_moments(big_or_small);
     const test::RenderMoments m_unit = test::render_moments(unit);
-    const test::RenderMoments m_scaled = test::render_moments(big_or_small);
-    EXPECT_EQ(m_scaled.dropped, 0u);
     const test::ZTestFamily family = compare(m_scaled, m_unit);
     EXPECT_TRUE(family.passed()) << family.summary();
     const test::ZTestFamily control = compare(m_scaled, m_unit, 1.1);
@@ -254,12 +257,9 @@ TEST(AdversarialScenes, CoincidentQuadsRenderBetweenTheirMaterials) {
     both.shapes.push_back({ShapeKind::kMesh, uint32_t(both.meshes.size() - 1), test::kCornellGreen, {}, false});
     white.sampler.seed = 21;
     green.sampler.seed = 22;
-    EXPECT_EQ(render_checked(both).stats.dropped_samples, 0u);
-
-    const test::RenderMoments m_both = test::render_moments(both);
+    const test::RenderMoments m_both = checked_moments(both);
     const test::RenderMoments m_white = test::render_moments(white);
     const test::RenderMoments m_green = test::render_moments(green);
-    EXPECT_EQ(m_both.dropped, 0u);
     const test::ZTestFamily family = between(m_both, m_white, m_green);
     EXPECT_TRUE(family.passed()) << family.summary();
     const test::ZTestFamily control = between(m_both, m_white, m_green, 0.8);
