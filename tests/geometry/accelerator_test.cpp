@@ -40,8 +40,8 @@ TEST(Accelerator, TriangleHitCarriesDistancePointNormalUvAndIds) {
     EXPECT_NEAR(hit->ng.z, -1.0f, 1e-6f);  // cross((0,2,0), (2,0,0)) = (0,0,-4)
     EXPECT_EQ(hit->ns, hit->ng);
     // uv = (s, t) along (edge1, edge2): s = (y+1)/2, t = (x+1)/2.
-    EXPECT_NEAR(hit->uv.x, 0.25f, 1e-6f);
-    EXPECT_NEAR(hit->uv.y, 0.75f, 1e-6f);
+    EXPECT_NEAR(scene.accel->uv(*hit).x, 0.25f, 1e-6f);
+    EXPECT_NEAR(scene.accel->uv(*hit).y, 0.75f, 1e-6f);
     EXPECT_EQ(hit->shape_id, 0u);
     EXPECT_TRUE(hit->front_face(Vec3f(0, 0, 1)));
     EXPECT_FALSE(scene.accel->intersect(Ray{{5, 5, 0}, {0, 0, 1}}));
@@ -74,6 +74,26 @@ TEST(Accelerator, SphereHitAndReverseOrientation) {
     EXPECT_EQ(back->shape_id, 1u);
     EXPECT_NEAR(back->ng.z, -1.0f, 1e-6f);  // reversed: its front is the inside, facing -z here
     EXPECT_FALSE(back->front_face(Vec3f(0, 0, -1)));
+}
+
+TEST(Accelerator, UvIsComputedOnDemandInEachShapesConvention) {
+    // A mesh with vertex uvs interpolates them; a sphere follows the environment's convention,
+    // u = atan2(x, -z) / 2pi, v = acos(y) / pi of the outward normal.
+    TriangleMesh tri;
+    tri.positions = {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
+    tri.indices = {0, 1, 2};
+    tri.uvs = {{0.5f, 0.5f}, {1.0f, 0.5f}, {0.5f, 1.0f}};
+    TestScene scene({tri}, {Sphere{{10, 0, 0}, 1.0, false}});
+    auto hit = scene.accel->intersect(Ray{{0.25f, 0.5f, 0}, {0, 0, 1}});
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(scene.accel->uv(*hit).x, 0.625f, 1e-6f);
+    EXPECT_NEAR(scene.accel->uv(*hit).y, 0.75f, 1e-6f);
+    // The sphere seen from +x: the hit's normal is +x, u = 1/4, v = 1/2.
+    auto on_sphere = scene.accel->intersect(Ray{{20, 0, 0}, {-1, 0, 0}});
+    ASSERT_TRUE(on_sphere);
+    EXPECT_EQ(on_sphere->shape_id, 1u);
+    EXPECT_NEAR(scene.accel->uv(*on_sphere).x, 0.25f, 1e-6f);
+    EXPECT_NEAR(scene.accel->uv(*on_sphere).y, 0.5f, 1e-6f);
 }
 
 TEST(Accelerator, OcclusionRespectsTmax) {

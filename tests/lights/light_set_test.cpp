@@ -40,6 +40,20 @@ TEST(LightSet, EveryEmittingShapeIsALight) {
     EXPECT_EQ(lights.size(), 3u);
 }
 
+TEST(LightSet, ReadsTheChoiceNumberOnlyWithSeveralLights) {
+    // One light: uc picks nothing, and any uc gives the same sample (so the integrators skip it).
+    LightTestScene one;
+    one.add_mesh(make_quad({-1.0f, -1.0f, 2.0f}, {2.0f, 0.0f, 0.0f}, {0.0f, 2.0f, 0.0f}), Rgb(1.0f));
+    LightSet lights = one.light_set();
+    EXPECT_FALSE(lights.uses_choice());
+    std::optional<LightSample> a = lights.sample(kOrigin, 0.1f, {0.3f, 0.6f});
+    std::optional<LightSample> b = lights.sample(kOrigin, 0.9f, {0.3f, 0.6f});
+    ASSERT_TRUE(a && b);
+    EXPECT_EQ(a->p, b->p);
+    EXPECT_TRUE(three_lights().light_set().uses_choice());
+    EXPECT_FALSE(LightTestScene().light_set().uses_choice());  // no light at all
+}
+
 TEST(LightSet, PowerSelectionIsProportionalToPower) {
     LightTestScene scene = three_lights();
     LightSet lights = scene.light_set(LightSelection::kPower);
@@ -254,6 +268,9 @@ TEST(LightSet, PdfEqualsTheSampledPdfExactly) {
             if (!s) continue;
             EXPECT_EQ(lights.pdf(ref, 0, s->p, s->n), s->pdf) << "scene " << k << ", sample " << i;
             EXPECT_TRUE(std::isfinite(s->pdf));
+            // The direction comes from the same double difference as the pdf.
+            Vec3d to_p = Vec3d(s->p) - Vec3d(ref);
+            EXPECT_NEAR(dot(Vec3d(s->wi), to_p / length(to_p)), 1.0, 1e-6) << "scene " << k << ", sample " << i;
         }
     }
 }

@@ -26,7 +26,7 @@ void expect_samples_on_sphere(const Sphere& sphere, const Vec3f& ref) {
     Rng rng(3, 4);
     for (int i = 0; i < 2000; ++i) {
         Vec2f u = rng.next_vec2f();
-        std::optional<EmitterSample> s = e.sample(ref, 0.5f, u);
+        std::optional<EmitterSample> s = e.sample(ref, u);
         ASSERT_TRUE(s) << "u = " << u.x << ", " << u.y;
         Vec3d offset = Vec3d(s->p) - sphere.center;
         EXPECT_NEAR(length(offset) / sphere.radius, 1.0, tolerance);
@@ -96,7 +96,7 @@ TEST(SphereEmitter, ConePdfIsOneOverTheConeSolidAngle) {
         EXPECT_FLOAT_EQ(e.pdf({0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, static_cast<float>(d) - 1.0f}, {0.0f, 0.0f, -1.0f}),
                         expected)
             << "d = " << d;
-        std::optional<EmitterSample> s = e.sample({0.0f, 0.0f, 0.0f}, 0.0f, {0.3f, 0.7f});
+        std::optional<EmitterSample> s = e.sample({0.0f, 0.0f, 0.0f}, {0.3f, 0.7f});
         ASSERT_TRUE(s);
         EXPECT_FLOAT_EQ(s->pdf, expected);
     }
@@ -111,7 +111,7 @@ TEST(SphereEmitter, NarrowConePdfAvoidsCancellation) {
     float pdf = e.pdf({0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 9999.0f}, {0.0f, 0.0f, -1.0f});
     EXPECT_FLOAT_EQ(pdf, static_cast<float>(1.0 / (2.0 * kPiD * one_minus_cos)));
     for (float ux : {0.0f, 0.5f, 0.9f, kOneMinusEpsilon}) {
-        std::optional<EmitterSample> s = e.sample({0.0f, 0.0f, 0.0f}, 0.0f, {ux, 0.1f});
+        std::optional<EmitterSample> s = e.sample({0.0f, 0.0f, 0.0f}, {ux, 0.1f});
         ASSERT_TRUE(s);
         // On the near cap (z <= 1e4, up to float rounding), and sin theta = |p.xy| / |p| follows
         // u: sin^2 theta = u sin^2 theta_max to first order.

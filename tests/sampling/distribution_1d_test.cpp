@@ -62,6 +62,34 @@ TEST(Distribution1D, InvertsTheCdfAndRemapsU) {
     EXPECT_FLOAT_EQ(e.probability, 0.5f);
 }
 
+TEST(Distribution1D, BranchFreeSearchMatchesALinearScanForEverySize) {
+    // The CDF rebuilt as the constructor documents it (double prefix sums over the total, 1 from
+    // the end of the last positive weight on), searched by a plain scan for the first edge > u.
+    Rng rng(3, 4);
+    for (size_t n = 1; n <= 40; ++n) {
+        std::vector<float> w(n);
+        for (float& x : w) x = rng.next_float() < 0.3f ? 0.0f : rng.next_float();
+        w[rng.next_u32() % n] = 1.0f;  // at least one positive weight
+        Distribution1D d(w);
+        std::vector<double> prefix(n + 1, 0.0);
+        size_t last_positive = 0;
+        for (size_t i = 0; i < n; ++i) {
+            prefix[i + 1] = prefix[i] + double(w[i]);
+            if (w[i] > 0.0f) last_positive = i;
+        }
+        std::vector<float> cdf(n + 1, 0.0f);
+        for (size_t i = 1; i <= n; ++i) cdf[i] = i > last_positive ? 1.0f : float(prefix[i] / prefix[n]);
+        for (int k = 0; k < 2000; ++k) {
+            // Random u, and u exactly on the CDF's edges below 1 (where the comparisons decide).
+            float u = k % 2 == 0 ? rng.next_float() : cdf[size_t(rng.next_u32() % n)];
+            if (u >= 1.0f) u = rng.next_float();
+            size_t expected = 0;
+            while (expected + 1 <= n && cdf[expected + 1] <= u) ++expected;
+            ASSERT_EQ(d.sample_discrete(u).index, expected) << "n = " << n << ", u = " << u;
+        }
+    }
+}
+
 TEST(Distribution1D, SampledProbabilityEqualsProbabilityOfIndex) {
     Distribution1D d(std::vector<float>{0.3f, 0.0f, 1.7f, 2.9f, 0.01f});
     for (float u : probe_us(d, 997)) {

@@ -19,6 +19,16 @@ TEST(OwenSobol, ReverseBits) {
     for (uint32_t x : {0u, 7u, 0xdeadbeefu}) EXPECT_EQ(reverse_bits(reverse_bits(x)), x);
 }
 
+TEST(OwenSobol, ReverseBitsOfHalvesReversesEachHalfAndSwapsThem) {
+    Rng rng(5, 6);
+    for (int k = 0; k < 10000; ++k) {
+        uint32_t lo = rng.next_u32(), hi = rng.next_u32();
+        uint64_t r = reverse_bits_of_halves(uint64_t(hi) << 32u | lo);
+        ASSERT_EQ(uint32_t(r), reverse_bits(hi));
+        ASSERT_EQ(uint32_t(r >> 32u), reverse_bits(lo));
+    }
+}
+
 TEST(OwenSobol, SecondDimensionMatchesTheKnownSequence) {
     // Sobol dimension 1 (polynomial x + 1, direction numbers 1/2, 3/4, 5/8), in binary (not Gray)
     // index order: 0, 1/2, 3/4, 1/4, 5/8, 1/8, 3/8, 7/8.

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "candela/math/constants.h"
@@ -78,6 +80,32 @@ TEST(Warps, ConcentricDiskStaysInTheDiskAndMapsTheCentreToTheOrigin) {
 
 // The concentric map's own cos and sin agree with the double-precision functions to float
 // rounding (a few 1e-8) over the whole range, endpoints included.
+TEST(Warps, SelectIsTheTernaryBitForBit) {
+    const float values[] = {0.0f, -0.0f, 1.0f, -2.5f, 1e-40f, kInfinity, std::numeric_limits<float>::quiet_NaN()};
+    for (float a : values)
+        for (float b : values) {
+            EXPECT_EQ(std::bit_cast<uint32_t>(select(true, a, b)), std::bit_cast<uint32_t>(a));
+            EXPECT_EQ(std::bit_cast<uint32_t>(select(false, a, b)), std::bit_cast<uint32_t>(b));
+        }
+}
+
+TEST(Warps, ConcentricDiskMatchesShirleyChiusMapWithLibraryTrigonometry) {
+    // The branch-free form against the textbook one (Shirley and Chiu 1997, with std::cos/sin).
+    for (Vec2f u : sample_grid(101)) {
+        double a = 2.0 * double(u.x) - 1.0, b = 2.0 * double(u.y) - 1.0, r, phi;
+        if (a == 0.0 && b == 0.0) {
+            r = 0.0, phi = 0.0;
+        } else if (std::abs(a) > std::abs(b)) {
+            r = a, phi = 0.25 * kPiD * (b / a);
+        } else {
+            r = b, phi = 0.5 * kPiD - 0.25 * kPiD * (a / b);
+        }
+        Vec2f p = sample_concentric_disk(u);
+        EXPECT_NEAR(p.x, r * std::cos(phi), 3e-7) << u.x << ", " << u.y;
+        EXPECT_NEAR(p.y, r * std::sin(phi), 3e-7) << u.x << ", " << u.y;
+    }
+}
+
 TEST(Warps, QuarterPiCosSinMatchesTheLibrary) {
     double worst = 0.0;
     for (int k = -100000; k <= 100000; ++k) {

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "candela/core/error.h"
 #include "candela/geometry/ray_offset.h"
@@ -94,9 +95,12 @@ RTCRay to_embree(const Ray& ray) {
 }  // namespace
 
 struct Accelerator::Impl {
-    std::span<const TriangleMesh> meshes;
-    std::span<const Sphere> spheres;
-    std::span<const Shape> shapes;
+    // Per Embree geometry id (= shape id), its mesh or its sphere: one load from a hit to its data.
+    struct Geometry {
+        const TriangleMesh* mesh = nullptr;
+        const Sphere* sphere = nullptr;
+    };
+    std::vector<Geometry> geometries;
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
 
@@ -138,17 +142,18 @@ struct Accelerator::Impl {
         check_embree(device, "build a shape");
     }
 
-    SurfaceHit make_triangle_hit(const RTCRayHit& rh) const {
-        const TriangleMesh& mesh = meshes[shapes[rh.hit.geomID].index];
+    // The hit records are written in place, into the caller's optional: a returned copy of a
+    // just-written struct would stall on store forwarding once per ray.
+    static void make_triangle_hit(const RTCRayHit& rh, const TriangleMesh& mesh, SurfaceHit& h) {
         uint32_t tri = rh.hit.primID;
         uint32_t i0 = mesh.indices[3 * tri], i1 = mesh.indices[3 * tri + 1], i2 = mesh.indices[3 * tri + 2];
         float b1 = rh.hit.u, b2 = rh.hit.v, b0 = 1.0f - b1 - b2;
         const Vec3f &p0 = mesh.positions[i0], &p1 = mesh.positions[i1], &p2 = mesh.positions[i2];
 
-        SurfaceHit h;
         h.t = rh.ray.tfar;
         h.shape_id = rh.hit.geomID;
         h.prim_id = tri;
+        h.b = Vec2f(b1, b2);
         // From the barycentrics rather than o + t d: the error is then relative to the vertex
         // coordinates, not to the ray length. The point is a convex combination, so it lies in
         // the triangle's plane up to the rounding of that sum: gamma(7) (|b0 p0| + |b1 p1| +
@@ -168,13 +173,9 @@ struct Accelerator::Impl {
                 h.ng = face_forward(h.ng, h.ns);  // pbrt's rule: the normals agree on the front
             }
         }
-        h.uv = mesh.uvs.empty() ? Vec2f(b1, b2) : mesh.uvs[i0] * b0 + mesh.uvs[i1] * b1 + mesh.uvs[i2] * b2;
-        return h;
     }
 
-    SurfaceHit make_sphere_hit(const RTCRayHit& rh, const Ray& ray) const {
-        const Sphere& s = spheres[shapes[rh.hit.geomID].index];
-        SurfaceHit h;
+    static void make_sphere_hit(const RTCRayHit& rh, const Ray& ray, const Sphere& s, SurfaceHit& h) {
         h.t = rh.ray.tfar;
         h.shape_id = rh.hit.geomID;
         h.prim_id = 0;
@@ -186,10 +187,7 @@ struct Accelerator::Impl {
         h.p_error = Vec3f(max_component(abs(h.p)) * rounding_gamma(5));
         h.ng = normalize(Vec3f(s.reverse_orientation ? -n : n));
         h.ns = h.ng;
-        // The environment's convention: +Y up, u = atan2(x, -z) / 2pi, v = acos(y) / pi.
-        double u = std::atan2(n.x, -n.z) / (2.0 * kPiD);
-        h.uv = Vec2f(float(u < 0.0 ? u + 1.0 : u), float(std::acos(std::clamp(n.y, -1.0, 1.0)) / kPiD));
-        return h;
+        h.b = Vec2f(0.0f, 0.0f);
     }
 };
 
@@ -197,9 +195,13 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
                          std::span<const Shape> shapes)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
-    m.meshes = meshes;
-    m.spheres = spheres;
-    m.shapes = shapes;
+    m.geometries.resize(shapes.size());
+    for (size_t id = 0; id < shapes.size(); ++id) {
+        if (shapes[id].kind == ShapeKind::kMesh)
+            m.geometries[id].mesh = &meshes[shapes[id].index];
+        else
+            m.geometries[id].sphere = &spheres[shapes[id].index];
+    }
     m.device = rtcNewDevice(nullptr);
     if (!m.device) throw RenderError("cannot create the Embree device");
     m.scene = rtcNewScene(m.device);
@@ -220,6 +222,7 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
 Accelerator::~Accelerator() = default;
 
 std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
+    std::optional<SurfaceHit> result;  // the one object returned, built in place
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh;
@@ -229,9 +232,28 @@ std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
     rtcIntersect1(impl_->scene, &context, &rh);
     if (RayObserver* o = g_ray_observer.load(std::memory_order_relaxed)) [[unlikely]]
         o->observe(ray, false, rh.hit.geomID != RTC_INVALID_GEOMETRY_ID);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    if (impl_->shapes[rh.hit.geomID].kind == ShapeKind::kSphere) return impl_->make_sphere_hit(rh, ray);
-    return impl_->make_triangle_hit(rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return result;
+    const Impl::Geometry& g = impl_->geometries[rh.hit.geomID];
+    if (g.sphere)
+        Impl::make_sphere_hit(rh, ray, *g.sphere, result.emplace());
+    else
+        Impl::make_triangle_hit(rh, *g.mesh, result.emplace());
+    return result;
+}
+
+Vec2f Accelerator::uv(const SurfaceHit& hit) const {
+    const Impl::Geometry& g = impl_->geometries[hit.shape_id];
+    if (g.sphere) {
+        Vec3d n = (Vec3d(hit.p) - g.sphere->center) / g.sphere->radius;
+        // The environment's convention: +Y up, u = atan2(x, -z) / 2pi, v = acos(y) / pi.
+        double u = std::atan2(n.x, -n.z) / (2.0 * kPiD);
+        return Vec2f(float(u < 0.0 ? u + 1.0 : u), float(std::acos(std::clamp(n.y, -1.0, 1.0)) / kPiD));
+    }
+    const TriangleMesh& mesh = *g.mesh;
+    if (mesh.uvs.empty()) return hit.b;
+    const uint32_t* v = &mesh.indices[3 * size_t(hit.prim_id)];
+    float b1 = hit.b.x, b2 = hit.b.y, b0 = 1.0f - b1 - b2;
+    return mesh.uvs[v[0]] * b0 + mesh.uvs[v[1]] * b1 + mesh.uvs[v[2]] * b2;
 }
 
 bool Accelerator::occluded(const Ray& ray) const {

@@ -44,6 +44,11 @@ class Accelerator {
 
     // The closest hit with ray.tmin <= t <= ray.tmax. Thread-safe.
     std::optional<SurfaceHit> intersect(const Ray& ray) const;
+    // The surface parameterisation (u, v) at a hit this accelerator returned: the mesh's vertex
+    // uvs interpolated, or the barycentrics (b1, b2) for meshes without uvs (a quad's (s, t));
+    // on spheres the environment's convention, u = atan2(x, -z) / 2pi, v = acos(y) / pi of the
+    // outward normal.
+    Vec2f uv(const SurfaceHit& hit) const;
     // Whether anything lies on the ray within [tmin, tmax] (shadow rays). Thread-safe.
     bool occluded(const Ray& ray) const;
     // World bounds of all shapes.

@@ -16,14 +16,15 @@ namespace candela {
 struct EmitterSample {
     Vec3f p;           // on the surface (world)
     Vec3f n;           // unit geometric normal of the front side at p
+    Vec3f wi;          // unit direction from the reference point towards p
     float pdf = 0.0f;  // per unit solid angle at the reference point, given this emitter
 };
 
 template <class T>
-concept EmitterType = requires(const T& e, Vec3f ref, float uc, Vec2f u, Vec3f p, Vec3f n) {
-    // A point seen from ref, from uc (a discrete choice, e.g. the triangle) and u; nullopt when
-    // its pdf would be 0 or infinite (ref in the plane of the chosen triangle).
-    { e.sample(ref, uc, u) } -> std::same_as<std::optional<EmitterSample>>;
+concept EmitterType = requires(const T& e, Vec3f ref, Vec2f u, Vec3f p, Vec3f n) {
+    // A point seen from ref, from u (which also makes any discrete choice, e.g. the triangle);
+    // nullopt when its pdf would be 0 or infinite (ref in the plane of the chosen triangle).
+    { e.sample(ref, u) } -> std::same_as<std::optional<EmitterSample>>;
     // The density per solid angle at ref with which sample() produces point p with normal n;
     // bit-identical to the pdf sample() returned for that point (MIS relies on it).
     { e.pdf(ref, p, n) } -> std::same_as<float>;
@@ -31,17 +32,33 @@ concept EmitterType = requires(const T& e, Vec3f ref, float uc, Vec2f u, Vec3f p
     { e.area() } -> std::same_as<float>;
 };
 
-// An area density at point p (unit normal n) converted to a density per solid angle at ref:
-// pdf_area * dist^2 / |cos theta_light|. 0 when ref lies on p, infinite when ref is in the
-// tangent plane. In double: with scene coordinates around 1e5 (smallpt) a float ref - p would
-// keep only a few bits.
-CANDELA_HD inline float solid_angle_pdf(double pdf_area, const Vec3f& ref, const Vec3f& p, const Vec3f& n) {
-    Vec3d d = Vec3d(ref) - Vec3d(p);  // exact: a difference of floats fits a double
+// A point p seen from ref: the density per solid angle there and the direction to it.
+struct SolidAngleDensity {
+    float pdf = 0.0f;
+    Vec3f wi;  // unit, from ref towards p; (0, 0, 0) when they coincide
+};
+
+// An area density at point p (unit normal n) converted to a density per solid angle at ref,
+// pdf_area * dist^2 / |cos theta_light| (0 when ref lies on p, infinite when ref is in the
+// tangent plane), and the direction towards p from the same difference, so that a light sample
+// takes one square root for both. In double: with scene coordinates around 1e5 (smallpt) a
+// float p - ref would keep only a few bits.
+CANDELA_HD inline SolidAngleDensity solid_angle_density(double pdf_area, const Vec3f& ref, const Vec3f& p,
+                                                        const Vec3f& n) {
+    SolidAngleDensity s;
+    Vec3d d = Vec3d(p) - Vec3d(ref);  // exact: a difference of floats fits a double
     double dist2 = dot(d, d);
-    if (dist2 == 0.0) return 0.0f;
+    if (dist2 == 0.0) return s;
+    double dist = std::sqrt(dist2);
+    s.wi = Vec3f(d * (1.0 / dist));
     double abs_cos_times_dist = std::abs(dot(Vec3d(n), d));  // |cos theta_light| * dist
-    if (abs_cos_times_dist == 0.0) return kInfinity;
-    return static_cast<float>(pdf_area * dist2 * std::sqrt(dist2) / abs_cos_times_dist);
+    s.pdf = abs_cos_times_dist == 0.0 ? kInfinity : static_cast<float>(pdf_area * dist2 * dist / abs_cos_times_dist);
+    return s;
+}
+
+// The density alone (emitters' pdf()); bit-identical to solid_angle_density's.
+CANDELA_HD inline float solid_angle_pdf(double pdf_area, const Vec3f& ref, const Vec3f& p, const Vec3f& n) {
+    return solid_angle_density(pdf_area, ref, p, n).pdf;
 }
 
 }  // namespace candela

@@ -29,6 +29,7 @@ LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere>
             environment_.reset();  // black: nothing to see or sample
     }
     selection_ = Distribution1D(weights);
+    for (size_t i = 0; i < weights.size(); ++i) selection_probability_.push_back(selection_.probability(i));
 }
 
 Rgb LightSet::environment_radiance(const Vec3f& w) const {
@@ -37,37 +38,44 @@ Rgb LightSet::environment_radiance(const Vec3f& w) const {
 
 float LightSet::environment_pdf(const Vec3f& w) const {
     if (!environment_) return 0.0f;
-    return selection_.probability(lights_.size()) * environment_->pdf(w);
+    return selection_probability_[lights_.size()] * environment_->pdf(w);
 }
 
 CANDELA_HD std::optional<LightSample> LightSet::sample(const Vec3f& ref, float uc, const Vec2f& u) const {
-    if (selection_.empty()) return std::nullopt;
-    DiscreteSample chosen = selection_.sample_discrete(uc);
-    if (chosen.index == lights_.size()) {  // the environment
+    // The one object returned on every path, built in place where the caller receives it.
+    std::optional<LightSample> result;
+    if (selection_.empty()) return result;
+    const uint32_t chosen = uses_choice() ? selection_.sample_discrete(uc).index : 0;
+    const float probability = selection_probability_[chosen];
+    if (chosen == lights_.size()) {  // the environment
         std::optional<EnvironmentSample> es = environment_->sample(u);
-        if (!es) return std::nullopt;
-        float pdf = chosen.probability * es->pdf;
-        if (!(pdf > 0.0f) || !std::isfinite(pdf)) return std::nullopt;
-        return LightSample{ref + es->wi, -es->wi, es->wi, true, es->Le, pdf};
+        if (!es) return result;
+        float pdf = probability * es->pdf;
+        if (!(pdf > 0.0f) || !std::isfinite(pdf)) return result;
+        result.emplace(LightSample{ref + es->wi, -es->wi, es->wi, true, es->Le, pdf});
+        return result;
     }
-    const AreaLight& light = lights_[chosen.index];
-    std::optional<EmitterSample> es =
-        visit([&](const auto& e) { return e.sample(ref, chosen.u_remapped, u); }, light.emitter);
-    if (!es) return std::nullopt;
+    const AreaLight& light = lights_[chosen];
+    std::optional<EmitterSample> es = visit([&](const auto& e) { return e.sample(ref, u); }, light.emitter);
+    if (!es) return result;
     // The same product, in the same order, as pdf() computes.
-    float pdf = chosen.probability * es->pdf;
-    if (!(pdf > 0.0f) || !std::isfinite(pdf)) return std::nullopt;
-    // Towards ref, in double: only its side of the surface matters, and far from the origin
-    // (smallpt's 1e5) a float difference could flip it at grazing angles.
-    Vec3f w = Vec3f(Vec3d(ref) - Vec3d(es->p));
-    return LightSample{es->p, es->n, normalize(-w), false, area_light_radiance(light, es->n, w), pdf};
+    float pdf = probability * es->pdf;
+    if (!(pdf > 0.0f) || !std::isfinite(pdf)) return result;
+    LightSample& ls = result.emplace();
+    ls.p = es->p;
+    ls.n = es->n;
+    ls.wi = es->wi;
+    ls.infinite = false;
+    ls.Le = area_light_radiance(light, es->n, -es->wi);
+    ls.pdf = pdf;
+    return result;
 }
 
 CANDELA_HD float LightSet::pdf(const Vec3f& ref, uint32_t shape_id, const Vec3f& p_light, const Vec3f& n_light) const {
     uint32_t li = light_index(shape_id);
     if (li == kNoLight) return 0.0f;
     float emitter_pdf = visit([&](const auto& e) { return e.pdf(ref, p_light, n_light); }, lights_[li].emitter);
-    return selection_.probability(li) * emitter_pdf;
+    return selection_probability_[li] * emitter_pdf;
 }
 
 CANDELA_HD Rgb LightSet::emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w) const {
@@ -77,7 +85,7 @@ CANDELA_HD Rgb LightSet::emitted(uint32_t shape_id, const Vec3f& n, const Vec3f&
 
 CANDELA_HD float LightSet::selection_probability(uint32_t shape_id) const {
     uint32_t li = light_index(shape_id);
-    return li == kNoLight ? 0.0f : selection_.probability(li);
+    return li == kNoLight ? 0.0f : selection_probability_[li];
 }
 
 }  // namespace candela

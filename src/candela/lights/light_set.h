@@ -7,8 +7,8 @@
 // reference point: area pdf * distance^2 / |cos theta_light|.
 //
 // A shape with emission but zero area (degenerate triangles) cannot be hit or sampled and is not
-// a light. Random numbers: uc picks the light, and what is left of it (Distribution1D's
-// u_remapped) picks the triangle of a mesh; u places the point.
+// a light. Random numbers: uc picks the light (only read when there are several: uses_choice());
+// u picks the triangle of a mesh and places the point (MeshEmitter::sample).
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -39,6 +39,8 @@ class LightSet {
     CANDELA_HD bool empty() const { return lights_.empty() && !environment_; }
     CANDELA_HD size_t size() const { return lights_.size() + (environment_ ? 1 : 0); }
     CANDELA_HD bool has_environment() const { return environment_.has_value(); }
+    // Whether sample() reads uc: there is more than one light to choose from.
+    CANDELA_HD bool uses_choice() const { return size() > 1; }
 
     // Radiance arriving from world direction w (unit) from the environment; black without one.
     Rgb environment_radiance(const Vec3f& w) const;
@@ -76,6 +78,8 @@ class LightSet {
     std::vector<uint32_t> light_of_shape_;  // shape id -> index in lights_, or kNoLight
     std::optional<EnvironmentLight> environment_;
     Distribution1D selection_;              // over lights_, then the environment (last index)
+    std::vector<float> selection_probability_;  // selection_.probability(i), computed once: it
+                                                // divides in double, and NEE and MIS ask per vertex
 };
 
 }  // namespace candela

@@ -32,7 +32,7 @@ struct SphereEmitter {
     // 4 pi r^2.
     CANDELA_HD float area() const { return static_cast<float>(4.0 * kPiD * sphere.radius * sphere.radius); }
     // A point the sphere shows to ref (u: the direction in the cone, or the point by area).
-    CANDELA_HD std::optional<EmitterSample> sample(const Vec3f& ref, float uc, Vec2f u) const;
+    CANDELA_HD std::optional<EmitterSample> sample(const Vec3f& ref, Vec2f u) const;
     // The cone density if ref is clearly outside the sphere (for any point p), else the area density
     // 1 / (4 pi r^2) converted at p.
     CANDELA_HD float pdf(const Vec3f& ref, const Vec3f& p, const Vec3f& n) const;
@@ -65,8 +65,7 @@ CANDELA_HD inline float SphereEmitter::pdf(const Vec3f& ref, const Vec3f& p, con
     return solid_angle_pdf(1.0 / (4.0 * kPiD * sphere.radius * sphere.radius), ref, p, n);
 }
 
-CANDELA_HD inline std::optional<EmitterSample> SphereEmitter::sample(const Vec3f& ref, [[maybe_unused]] float uc,
-                                                                     Vec2f u) const {
+CANDELA_HD inline std::optional<EmitterSample> SphereEmitter::sample(const Vec3f& ref, Vec2f u) const {
     const double r = sphere.radius;
     Vec3d n_out;  // unit outward normal at the sampled point
     double one_minus_cos_max = cone_one_minus_cos_max(ref);
@@ -102,6 +101,9 @@ CANDELA_HD inline std::optional<EmitterSample> SphereEmitter::sample(const Vec3f
     es.n = front_normal(n_out);
     es.pdf = pdf(ref, es.p, es.n);
     if (!(es.pdf > 0.0f) || !std::isfinite(es.pdf)) return std::nullopt;
+    // In double: far from the origin (smallpt's 1e5) a float difference keeps few bits.
+    Vec3d d = Vec3d(es.p) - Vec3d(ref);
+    es.wi = Vec3f(d * (1.0 / length(d)));
     return es;
 }
 

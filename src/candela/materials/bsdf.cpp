@@ -26,24 +26,29 @@ CANDELA_HD float Bsdf::pdf(const Vec3f& wo, const Vec3f& wi) const {
 
 CANDELA_HD std::optional<BsdfSample> Bsdf::sample(const Vec3f& wo, float uc, const Vec2f& u,
                                                   TransportMode mode) const {
-    if (lobe_count == 0) return std::nullopt;
     // uc picks lobe k and is then stretched back over [0, 1) for the lobe's own discrete choice
-    // (pbrt-v3's uRemapped), so one number serves both without correlating them.
+    // (pbrt-v3's uRemapped), so one number serves both without correlating them. With one lobe
+    // (most materials) there is no choice and uc goes to the lobe as it is.
     auto n = static_cast<float>(lobe_count);
-    uint32_t k = static_cast<uint32_t>(uc * n);
-    if (k >= lobe_count) k = lobe_count - 1;
-    float uc_lobe = clamp(uc * n - static_cast<float>(k), 0.0f, kOneMinusEpsilon);
-
+    uint32_t k = 0;
+    float uc_lobe = uc;
+    if (lobe_count > 1) {
+        k = static_cast<uint32_t>(uc * n);
+        if (k >= lobe_count) k = lobe_count - 1;
+        uc_lobe = clamp(uc * n - static_cast<float>(k), 0.0f, kOneMinusEpsilon);
+    }
+    // One object, initialised by the lobe and returned on every path, so that it is built where
+    // the caller receives it (a copy of a just-written struct stalls on store forwarding).
     std::optional<BsdfSample> s =
-        visit([&](const auto& lobe) { return lobe.sample(wo, uc_lobe, u, mode); }, lobes[k]);
-    if (!s || !(s->pdf > 0.0f)) return std::nullopt;
-    if (s->is_delta) {
+        lobe_count == 0 ? std::nullopt
+                        : visit([&](const auto& lobe) { return lobe.sample(wo, uc_lobe, u, mode); }, lobes[k]);
+    if (!s || !(s->pdf > 0.0f)) {
+        s.reset();
+    } else if (s->is_delta) {
         // Only this lobe can have produced wi: the others' densities there are 0 (or, for other
         // delta lobes, meet it with probability 0). The lobe choice divides the probability.
-        s->pdf /= n;
-        return s;
-    }
-    if (lobe_count > 1) {
+        if (lobe_count > 1) s->pdf /= n;
+    } else if (lobe_count > 1) {
         s->f = eval(wo, s->wi, mode);
         s->pdf = pdf(wo, s->wi);
     }

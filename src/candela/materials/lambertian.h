@@ -22,17 +22,19 @@ struct LambertianLobe {
     }
     // A cosine-distributed wi on wo's side (uc unused). Since f |cos| / pdf = albedo for every
     // sample, the estimator of the directional albedo has no variance (Nori's diffuse.cpp).
-    CANDELA_HD std::optional<BsdfSample> sample(const Vec3f& wo, float, const Vec2f& u,
-                                                TransportMode mode) const {
+    CANDELA_HD std::optional<BsdfSample> sample(const Vec3f& wo, float, const Vec2f& u, TransportMode) const {
+        // Built where the caller receives it (one object, returned on every path): a copy of a
+        // just-written struct costs a store-forwarding stall per sample.
+        std::optional<BsdfSample> result;
         Vec3f wi = sample_cosine_hemisphere(u);
         if (wo.z < 0.0f) wi.z = -wi.z;
         // wo in the surface's plane, or wi drawn on the disk's rim: no hemisphere holds both.
-        if (!same_hemisphere(wo, wi)) return std::nullopt;
-        BsdfSample s;
-        s.f = eval(wo, wi, mode);
+        if (!same_hemisphere(wo, wi)) return result;
+        BsdfSample& s = result.emplace();  // eval() and pdf() for a wi known to be in wo's hemisphere
+        s.f = reflectance * kInvPi;
         s.wi = wi;
-        s.pdf = pdf(wo, wi);
-        return s;
+        s.pdf = abs_cos_theta(wi) * kInvPi;
+        return result;
     }
     static constexpr bool kUsesChoice = false;
     CANDELA_HD bool is_delta() const { return false; }

@@ -68,7 +68,7 @@ CANDELA_HD constexpr T length_squared(const Vec3<T>& v) { return dot(v, v); }
 template <class T>
 CANDELA_HD inline T length(const Vec3<T>& v) { return std::sqrt(dot(v, v)); }
 template <class T>
-CANDELA_HD inline Vec3<T> normalize(const Vec3<T>& v) { return v / length(v); }
+CANDELA_HD inline Vec3<T> normalize(const Vec3<T>& v) { return v * (T(1) / length(v)); }
 template <class T>
 CANDELA_HD inline Vec3<T> abs(const Vec3<T>& v) { return {std::abs(v.x), std::abs(v.y), std::abs(v.z)}; }
 template <class T>

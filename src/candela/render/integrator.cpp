@@ -1,10 +1,19 @@
 #include "candela/render/integrator.h"
 
+#include <algorithm>
+
 #include "candela/render/debug_integrators.h"
 #include "candela/render/transport_integrators.h"
 #include "candela/scene/scene.h"
 
 namespace candela {
+
+TransportIntegrator::TransportIntegrator(const Scene& scene, const Accelerator& accel, const LightSet& lights)
+    : scene_(scene),
+      accel_(accel),
+      lights_(lights),
+      any_material_uses_choice_(std::any_of(scene.materials.begin(), scene.materials.end(),
+                                            [](const Material& m) { return m.bsdf.uses_choice(); })) {}
 
 std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Accelerator& accel, const LightSet& lights) {
     const IntegratorSettings& s = scene.integrator;

@@ -33,37 +33,77 @@ inline float power_heuristic(float pdf_a, float pdf_b) {
     return a + b > 0.0f ? a / (a + b) : 0.0f;
 }
 
-// Russian roulette after the path's bounce number `bounces` (1 = first scattering): the first
-// rr_depth bounces are never cut. Returns false when the path ends, otherwise divides
-// beta by the survival probability. By default the survival probability is the throughput's
-// largest component (with refraction's eta^2 radiance scaling taken out, as pbrt-v4 does, so a
-// path inside glass is not killed for being compressed); a fixed probability when the settings
-// give one (GAMES101's 0.8).
-inline bool survive_russian_roulette(Rgb& beta, float eta_scale, int bounces, const IntegratorSettings& s, Sampler& sampler) {
-    // A request every bounce, so later dimensions do not shift; computed only when it is used.
+// The random numbers of a vertex, drawn before its ray is traced. They do not depend on the hit,
+// and a Sobol request is a chain of dependent multiplies (sampler.h): drawn first, the CPU works
+// them out while Embree traverses, instead of stalling on them after the hit (4.5% of a Cornell
+// box render). The requests keep the sampler's fixed order; one a decision cannot need is skipped.
+
+// Next-event estimation: the light choice (skipped with one light), then the point on the light.
+struct LightNumbers {
+    float uc = 0.0f;
+    Vec2f u;
+};
+inline LightNumbers draw_light_numbers(Sampler& sampler, const LightSet& lights) {
+    LightNumbers n;
+    if (lights.empty()) {
+        sampler.skip_float();
+        sampler.skip_vec2f();
+        return n;
+    }
+    if (lights.uses_choice())
+        n.uc = sampler.next_float();
+    else
+        sampler.skip_float();
+    n.u = sampler.next_vec2f();
+    return n;
+}
+
+// BSDF sampling: the lobe choice (skipped when no material of the scene reads it,
+// Bsdf::uses_choice), then the direction.
+struct BsdfNumbers {
+    float uc = 0.0f;
+    Vec2f u;
+};
+inline BsdfNumbers draw_bsdf_numbers(Sampler& sampler, bool any_material_uses_choice) {
+    BsdfNumbers n;
+    if (any_material_uses_choice)
+        n.uc = sampler.next_float();
+    else
+        sampler.skip_float();
+    n.u = sampler.next_vec2f();
+    return n;
+}
+
+// Russian roulette after bounce number `bounces` (1 = first scattering): skipped for the first
+// rr_depth bounces, which are never cut.
+inline float draw_roulette_number(Sampler& sampler, int bounces, const IntegratorSettings& s) {
     if (bounces <= s.rr_depth) {
         sampler.skip_float();
-        return true;
+        return 0.0f;
     }
-    float u = sampler.next_float();
+    return sampler.next_float();
+}
+
+// Russian roulette after the path's bounce number `bounces` (1 = first scattering) with the
+// number `u` drawn for it: the first rr_depth bounces are never cut. Returns false when the path
+// ends, otherwise divides beta by the survival probability. By default the survival probability
+// is the throughput's largest component (with refraction's eta^2 radiance scaling taken out, as
+// pbrt-v4 does, so a path inside glass is not killed for being compressed); a fixed probability
+// when the settings give one (GAMES101's 0.8).
+inline bool survive_russian_roulette(Rgb& beta, float eta_scale, int bounces, const IntegratorSettings& s, float u) {
+    if (bounces <= s.rr_depth) return true;
     float survive = s.rr_probability > 0.0f ? s.rr_probability : std::min(1.0f, (beta * eta_scale).max_component());
     if (survive <= 0.0f || u >= survive) return false;
     beta = beta / survive;
     return true;
 }
 
-// One light sample for the vertex: f |cos| Le / pdf, weighted by the power heuristic against
-// BSDF sampling when `mis`. Counts its shadow ray. Black for delta-only BSDFs.
+// One light sample for the vertex, from `n`: f |cos| Le / pdf, weighted by the power heuristic
+// against BSDF sampling when `mis`. Counts its shadow ray. Black for delta-only BSDFs.
 inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, const Accelerator& accel, bool mis,
-                               Sampler& sampler, RayCounters& counters) {
-    if (v.bsdf.is_delta_only() || lights.empty()) {
-        sampler.skip_float();
-        sampler.skip_vec2f();
-        return Rgb(0.0f);
-    }
-    float uc = sampler.next_float();
-    Vec2f u = sampler.next_vec2f();
-    std::optional<LightSample> ls = lights.sample(v.hit.p, uc, u);
+                               const LightNumbers& n, RayCounters& counters) {
+    if (v.bsdf.is_delta_only() || lights.empty()) return Rgb(0.0f);
+    std::optional<LightSample> ls = lights.sample(v.hit.p, n.uc, n.u);
     if (!ls || ls->pdf <= 0.0f || ls->Le.is_black()) return Rgb(0.0f);
     Vec3f wi = v.frame.to_local(ls->wi);
     Rgb f = v.bsdf.eval(v.wo, wi, TransportMode::kRadiance) * std::abs(wi.z);
@@ -76,16 +116,11 @@ inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, cons
     return f * ls->Le * (w / ls->pdf);
 }
 
-// Samples the BSDF for the path's next direction and moves the path there: beta *= f |cos| / pdf
-// and `ray` becomes the spawned ray. Returns the sample, or nullopt when the path ends here.
-inline std::optional<BsdfSample> continue_path(const PathVertex& v, Sampler& sampler, Rgb& beta, Ray& ray) {
-    float uc = 0.0f;  // read only by BSDFs that choose (Bsdf::uses_choice)
-    if (v.bsdf.uses_choice())
-        uc = sampler.next_float();
-    else
-        sampler.skip_float();
-    Vec2f u = sampler.next_vec2f();
-    std::optional<BsdfSample> bs = v.bsdf.sample(v.wo, uc, u, TransportMode::kRadiance);
+// Samples the BSDF with `n` for the path's next direction and moves the path there:
+// beta *= f |cos| / pdf and `ray` becomes the spawned ray. Returns the sample, or nullopt when the
+// path ends here.
+inline std::optional<BsdfSample> continue_path(const PathVertex& v, const BsdfNumbers& n, Rgb& beta, Ray& ray) {
+    std::optional<BsdfSample> bs = v.bsdf.sample(v.wo, n.uc, n.u, TransportMode::kRadiance);
     if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) return std::nullopt;
     beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
     ray = spawn_ray(v.hit, v.frame.to_world(bs->wi));

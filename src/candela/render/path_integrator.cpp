@@ -15,6 +15,10 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounter
     Vec3f prev_p;
     for (int bounces = 0;; ++bounces) {
         ++(bounces == 0 ? counters.camera : counters.bounce);
+        // This vertex's random numbers, drawn while the ray is traced (path_common.h).
+        const LightNumbers light_numbers = draw_light_numbers(sampler, lights_);
+        const BsdfNumbers bsdf_numbers = draw_bsdf_numbers(sampler, any_material_uses_choice_);
+        const float roulette_number = draw_roulette_number(sampler, bounces + 1, scene_.integrator);
         std::optional<SurfaceHit> hit = accel_.intersect(ray);
         if (!hit) {
             // The ray escapes to the environment: the same MIS rule as for hitting an emitter.
@@ -39,15 +43,15 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounter
         if (bounces == scene_.integrator.max_depth) break;
 
         PathVertex v(scene_, *hit, ray);
-        L += beta * sample_direct_light(v, lights_, accel_, scene_.integrator.mis, sampler, counters);
+        L += beta * sample_direct_light(v, lights_, accel_, scene_.integrator.mis, light_numbers, counters);
 
-        std::optional<BsdfSample> bs = continue_path(v, sampler, beta, ray);
+        std::optional<BsdfSample> bs = continue_path(v, bsdf_numbers, beta, ray);
         if (!bs) break;
         if (bs->is_transmission) eta_scale *= sqr(bs->eta);
         after_delta = bs->is_delta;
         prev_bsdf_pdf = bs->pdf;
         prev_p = hit->p;
-        if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, sampler)) break;
+        if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, roulette_number)) break;
     }
     return L;
 }

@@ -12,13 +12,13 @@ namespace candela {
 // (Abstract: radiance() stays pure. The constructor is public because derived classes inherit it.)
 class TransportIntegrator : public Integrator {
   public:
-    TransportIntegrator(const Scene& scene, const Accelerator& accel, const LightSet& lights)
-        : scene_(scene), accel_(accel), lights_(lights) {}
+    TransportIntegrator(const Scene& scene, const Accelerator& accel, const LightSet& lights);
 
   protected:
     const Scene& scene_;
     const Accelerator& accel_;
     const LightSet& lights_;
+    bool any_material_uses_choice_ = false;  // some material reads the lobe-choice number
 };
 
 // Unidirectional path tracing with next-event estimation and BSDF sampling, combined by multiple

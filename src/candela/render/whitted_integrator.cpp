@@ -8,6 +8,9 @@ Rgb WhittedIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCoun
     Ray ray = camera_ray;
     for (int bounces = 0;; ++bounces) {
         ++(bounces == 0 ? counters.camera : counters.bounce);
+        // This vertex's random numbers, drawn while the ray is traced (path_common.h).
+        const LightNumbers light_numbers = draw_light_numbers(sampler, lights_);
+        const BsdfNumbers bsdf_numbers = draw_bsdf_numbers(sampler, any_material_uses_choice_);
         std::optional<SurfaceHit> hit = accel_.intersect(ray);
         if (!hit) {
             L += beta * lights_.environment_radiance(ray.d);
@@ -18,10 +21,10 @@ Rgb WhittedIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCoun
         if (bounces == scene_.integrator.max_depth) break;
 
         PathVertex v(scene_, *hit, ray);
-        L += beta * sample_direct_light(v, lights_, accel_, /*mis=*/false, sampler, counters);
+        L += beta * sample_direct_light(v, lights_, accel_, /*mis=*/false, light_numbers, counters);
 
         // Only delta lobes continue the path; a non-delta choice ends it (its light is counted).
-        std::optional<BsdfSample> bs = continue_path(v, sampler, beta, ray);
+        std::optional<BsdfSample> bs = continue_path(v, bsdf_numbers, beta, ray);
         if (!bs || !bs->is_delta) break;
     }
     return L;

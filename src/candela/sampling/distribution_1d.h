@@ -14,6 +14,7 @@
 // 2^-24 is selected with a frequency that differs from probability() by up to 2^-24 (pbrt-v4's
 // light samplers share this). The u left over after a choice (u_remapped) keeps about
 // 24 - log2(1 / probability) bits.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -89,25 +90,27 @@ CANDELA_HD inline DiscreteSample Distribution1D::sample_discrete(float u) const 
     if (!(u >= 0.0f)) {
         i = first_positive_;
     } else {
-        size_t lo = 1, len = n;
-        while (len > 0) {
+        // Branch-free binary search (Khuong and Morin 2017, "Array Layouts for Comparison-Based
+        // Searching"): u is random, so the branches of the textbook search would be mispredicted
+        // half the time. `base` ends on the last of cdf_[1..n] that is <= u (or before the first).
+        const float* first = cdf_.data() + 1;
+        const float* base = first;
+        for (size_t len = n; len > 1;) {
             size_t half = len / 2;
-            if (cdf_[lo + half] <= u) {
-                lo += half + 1;
-                len -= half + 1;
-            } else {
-                len = half;
-            }
+            base = base[half - 1] <= u ? base + half : base;
+            len -= half;
         }
-        i = lo - 1 < n ? lo - 1 : last_positive_;
+        size_t j = size_t(base - first) + (*base <= u ? 1 : 0);  // cdf_[1 + j] is the first > u
+        i = j < n ? j : last_positive_;
     }
     DiscreteSample s;
     s.index = static_cast<uint32_t>(i);
     s.probability = probability(i);
     float width = cdf_[i + 1] - cdf_[i];
     float r = width > 0.0f ? (u - cdf_[i]) / width : 0.0f;
-    s.u_remapped = clamp(r, 0.0f, kOneMinusEpsilon);  // also maps a NaN u to 0
-    if (!(s.u_remapped >= 0.0f)) s.u_remapped = 0.0f;
+    // min and max rather than clamp(): compiled to minss/maxss, no branch on the random r.
+    s.u_remapped = std::min(std::max(r, 0.0f), kOneMinusEpsilon);
+    if (!(s.u_remapped >= 0.0f)) s.u_remapped = 0.0f;  // a NaN u
     return s;
 }
 

@@ -28,6 +28,16 @@ CANDELA_HD constexpr uint32_t reverse_bits(uint32_t x) {
     return x;
 }
 
+// The bits of each 32-bit half of x in reverse order, the halves swapped: two reverse_bits for
+// the price of one (the x and y of a 2D sample).
+CANDELA_HD constexpr uint64_t reverse_bits_of_halves(uint64_t x) {
+    x = __builtin_bswap64(x);
+    x = ((x & 0x0f0f0f0f0f0f0f0full) << 4) | ((x & 0xf0f0f0f0f0f0f0f0ull) >> 4);
+    x = ((x & 0x3333333333333333ull) << 2) | ((x & 0xccccccccccccccccull) >> 2);
+    x = ((x & 0x5555555555555555ull) << 1) | ((x & 0xaaaaaaaaaaaaaaaaull) >> 1);
+    return x;
+}
+
 // Laine and Karras's hash (2011, as improved by Burley 2020): a bijection on 32-bit integers in
 // which bit k of the output depends only on bits 0..k of the input (additions and multiplications
 // by even constants carry only upwards), randomly enough to act as an Owen scramble of the

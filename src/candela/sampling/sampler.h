@@ -4,12 +4,16 @@
 // so a request's position in that order is its dimension:
 //
 //   request 0      2D  pixel filter (film position)
-//   per bounce     1D  light choice, 2D light point (next-event estimation)
+//   per bounce     1D  light choice, 2D light point (next-event estimation; the point's x also
+//                      picks a mesh light's triangle, MeshEmitter::sample)
 //                  1D  BSDF lobe choice, 2D BSDF direction
 //                  1D  Russian roulette
 //
 // A request whose number a decision does not need is skipped (skip_float, skip_vec2f) rather
-// than computed: it still takes its place in the order.
+// than computed: it still takes its place in the order. What is skipped is known before the
+// bounce's ray is traced (the light choice with a single light, the lobe choice when no material
+// reads it, roulette before rr_depth), so the integrators draw a bounce's numbers first and the
+// CPU computes them while Embree traverses (render/path_common.h).
 //
 // Two kinds (scene key sampler.type):
 //  - independent: PCG32 from Rng::for_sample(pixel, sample, seed), as before: every number
@@ -57,8 +61,11 @@ class Sampler {
         // The y scramble's seed: the key's halves already seed the shuffle and x; a 32-bit
         // multiplicative hash of them gives a third, unrelated one.
         uint32_t y_seed = (uint32_t(key) ^ uint32_t(key >> 32)) * 0x9e3779b9u + 0x7f4a7c15u;
-        return {u32_to_unit_float(scrambled_dimension0(i, uint32_t(key >> 32))),
-                u32_to_unit_float(reverse_bits(laine_karras_permutation(sobol_dimension1_reversed(i), y_seed)))};
+        // Both coordinates are Owen scrambles of reversed values, reversed back in one step.
+        uint64_t scrambled_reversed = uint64_t(laine_karras_permutation(i, uint32_t(key >> 32))) << 32u |
+                                      laine_karras_permutation(sobol_dimension1_reversed(i), y_seed);
+        uint64_t xy = reverse_bits_of_halves(scrambled_reversed);  // x in the low half, y in the high
+        return {u32_to_unit_float(uint32_t(xy)), u32_to_unit_float(uint32_t(xy >> 32u))};
     }
 
     // The request next_float() or next_vec2f() would answer, skipped without computing it: for
