@@ -163,7 +163,7 @@ struct Accelerator::Impl {
         // vertices far out in x and z still needs an offset along y of that magnitude (and a
         // zero bound would leave only a denormal step, which FTZ/DAZ flushes away).
         h.p_error = Vec3f(max_component(abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * rounding_gamma(7));
-        h.ng = normalize(cross(p1 - p0, p2 - p0));
+        h.ng = winding_normal(p0, p1, p2);
         h.ns = h.ng;
         if (!mesh.normals.empty()) {
             Vec3f n = mesh.normals[i0] * b0 + mesh.normals[i1] * b1 + mesh.normals[i2] * b2;

@@ -19,6 +19,12 @@ struct TriangleMesh {
     size_t triangle_count() const { return indices.size() / 3; }
 };
 
+// The unit normal of triangle p0 p1 p2's counter-clockwise side, the front: what hits report as
+// the geometric normal and what light samples on an emitting mesh use, so the two always agree.
+inline Vec3f winding_normal(const Vec3f& p0, const Vec3f& p1, const Vec3f& p2) {
+    return normalize(cross(p1 - p0, p2 - p0));
+}
+
 // Moves an object-space mesh to world space and resolves its front side, as DESIGN.md's scene
 // format says (pbrt's rule): positions by `to_world`; vertex normals by its inverse transpose; the
 // winding reversed when exactly one of `reverse_orientation` and to_world.swaps_handedness()

@@ -12,10 +12,9 @@ MeshEmitter::MeshEmitter(const TriangleMesh& mesh) : mesh_(&mesh) {
         const Vec3f& p0 = mesh.positions[mesh.indices[3 * t]];
         const Vec3f& p1 = mesh.positions[mesh.indices[3 * t + 1]];
         const Vec3f& p2 = mesh.positions[mesh.indices[3 * t + 2]];
-        Vec3f c = cross(p1 - p0, p2 - p0);
-        areas[t] = 0.5f * length(c);
+        areas[t] = 0.5f * length(cross(p1 - p0, p2 - p0));
         // A zero-area triangle is never sampled, so its normal is never read.
-        if (store_normals && areas[t] > 0.0f) face_normals_[t] = normalize(c);
+        if (store_normals && areas[t] > 0.0f) face_normals_[t] = winding_normal(p0, p1, p2);
     }
     triangles_ = Distribution1D(areas);
     // The distribution's double sum: a float sum over millions of triangles would drift.

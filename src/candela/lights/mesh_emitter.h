@@ -66,7 +66,7 @@ CANDELA_HD inline std::optional<EmitterSample> MeshEmitter::sample(const Vec3f& 
     if (m.normals.empty()) {
         s.n = face_normals_[tri];
     } else {
-        s.n = normalize(cross(p1 - p0, p2 - p0));  // nonzero: the triangle has positive area
+        s.n = winding_normal(p0, p1, p2);  // nonzero: the triangle has positive area
         Vec3f ns = m.normals[i0] * b.x + m.normals[i1] * b.y + m.normals[i2] * b.z;
         if (length(ns) > 0.0f) s.n = face_forward(s.n, ns);
     }

@@ -35,8 +35,8 @@ inline float power_heuristic(float pdf_a, float pdf_b) {
 
 // The random numbers of a vertex, drawn before its ray is traced. They do not depend on the hit,
 // and a Sobol request is a chain of dependent multiplies (sampler.h): drawn first, the CPU works
-// them out while Embree traverses, instead of stalling on them after the hit (4.5% of a Cornell
-// box render). The requests keep the sampler's fixed order; one a decision cannot need is skipped.
+// them out while Embree traverses, instead of stalling on them after the hit (6% of a Cornell
+// box render, bench/RESULTS.md). The requests keep the sampler's fixed order; one a decision cannot need is skipped.
 
 // Next-event estimation: the light choice (skipped with one light), then the point on the light.
 struct LightNumbers {
