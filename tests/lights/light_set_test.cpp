@@ -222,6 +222,48 @@ TEST(LightSet, MeshSamplesLieInTheirTriangles) {
     for (int count : per_triangle) EXPECT_GT(count, 0);
 }
 
+// Quads are sampled as parallelograms (a + u.x e1 + u.y e2); other meshes triangle by triangle.
+TEST(MeshEmitter, QuadsAndOnlyQuadsUseTheParallelogramForm) {
+    EXPECT_TRUE(MeshEmitter(make_quad({-1.0f, 3.0f, -1.0f}, {2.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 2.0f})).is_parallelogram());
+    // Far from the origin and rotated, with every corner rounded on its own (as a transform does).
+    TriangleMesh turned = make_quad({343.0f, 548.7f, 227.0f}, {0.0f, 0.0f, 105.0f}, {-130.0f, 0.0f, 0.0f});
+    const float c = std::cos(0.7f), s = std::sin(0.7f);
+    for (Vec3f& p : turned.positions) p = Vec3f(c * p.x - s * p.y, s * p.x + c * p.y, p.z + 1000.0f);
+    EXPECT_TRUE(MeshEmitter(turned).is_parallelogram());
+    // A kite: two triangles sharing a diagonal, but not a parallelogram.
+    TriangleMesh kite = make_quad({0.0f, 0.0f, 1.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
+    kite.positions[2] = Vec3f(1.5f, 1.5f, 1.0f);
+    EXPECT_FALSE(MeshEmitter(kite).is_parallelogram());
+    // Vertex normals decide the front per point: the triangle route handles them.
+    TriangleMesh smooth = make_quad({0.0f, 0.0f, 1.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
+    smooth.normals.assign(4, Vec3f(0.0f, 0.0f, 1.0f));
+    EXPECT_FALSE(MeshEmitter(smooth).is_parallelogram());
+    // Two separate triangles that happen to share no diagonal.
+    TriangleMesh apart = make_quad({0.0f, 0.0f, 1.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
+    apart.indices = {0, 1, 2, 2, 3, 1};
+    EXPECT_FALSE(MeshEmitter(apart).is_parallelogram());
+}
+
+TEST(MeshEmitter, ParallelogramSamplesKeepTheirStratumAndTheHitNormal) {
+    const Vec3f a(-1.0f, -0.5f, 2.0f), e1(2.0f, 0.0f, 0.4f), e2(0.3f, 1.0f, 0.0f);
+    TriangleMesh quad = make_quad(a, e1, e2);
+    MeshEmitter emitter(quad);
+    ASSERT_TRUE(emitter.is_parallelogram());
+    // The point is a + u.x e1 + u.y e2: every stratum of u lands in the matching part of the quad.
+    Rng rng(3, 7);
+    for (int i = 0; i < 1000; ++i) {
+        Vec2f u = rng.next_vec2f();
+        std::optional<EmitterSample> s = emitter.sample(kOrigin, u);
+        ASSERT_TRUE(s);
+        Vec3f expected = a + e1 * u.x + e2 * u.y;
+        EXPECT_LT(length(s->p - expected), 1e-6f) << "u = " << u.x << ", " << u.y;
+        // The normal of the triangle the point lies in: (a, b, c) below the diagonal, (a, c, d) above.
+        const uint32_t* v = &quad.indices[u.y > u.x ? 3 : 0];
+        EXPECT_EQ(s->n, winding_normal(quad.positions[v[0]], quad.positions[v[1]], quad.positions[v[2]]));
+        EXPECT_EQ(emitter.pdf(kOrigin, s->p, s->n), s->pdf);
+    }
+}
+
 TEST(LightSet, PdfOfSmallFarQuadIsDistanceSquaredOverProjectedArea) {
     // A 0.01 x 0.01 quad 10 away, tilted 60 degrees: pdf = d^2 / (A cos theta) to O(size / d).
     const float c = 0.5f, s = std::sqrt(3.0f) / 2.0f;
@@ -268,7 +310,7 @@ TEST(LightSet, PdfEqualsTheSampledPdfExactly) {
             if (!s) continue;
             EXPECT_EQ(lights.pdf(ref, 0, s->p, s->n), s->pdf) << "scene " << k << ", sample " << i;
             EXPECT_TRUE(std::isfinite(s->pdf));
-            // The direction comes from the same double difference as the pdf.
+            // The direction comes from the same difference as the pdf.
             Vec3d to_p = Vec3d(s->p) - Vec3d(ref);
             EXPECT_NEAR(dot(Vec3d(s->wi), to_p / length(to_p)), 1.0, 1e-6) << "scene " << k << ", sample " << i;
         }

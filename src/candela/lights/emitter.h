@@ -41,23 +41,25 @@ struct SolidAngleDensity {
 // An area density at point p (unit normal n) converted to a density per solid angle at ref,
 // pdf_area * dist^2 / |cos theta_light| (0 when ref lies on p, infinite when ref is in the
 // tangent plane), and the direction towards p from the same difference, so that a light sample
-// takes one square root for both. In double: with scene coordinates around 1e5 (smallpt) a
-// float p - ref would keep only a few bits.
-CANDELA_HD inline SolidAngleDensity solid_angle_density(double pdf_area, const Vec3f& ref, const Vec3f& p,
+// takes one square root for both. In float: p - ref is a correctly rounded difference of two
+// floats, so its relative error is 2^-24 however large the coordinates are (smallpt's 1e5) and
+// however close the points; the products after it add a few roundings more. |cos| dist comes
+// from d itself, not from the normalized direction, so it does not wait for the square root.
+CANDELA_HD inline SolidAngleDensity solid_angle_density(float pdf_area, const Vec3f& ref, const Vec3f& p,
                                                         const Vec3f& n) {
     SolidAngleDensity s;
-    Vec3d d = Vec3d(p) - Vec3d(ref);  // exact: a difference of floats fits a double
-    double dist2 = dot(d, d);
-    if (dist2 == 0.0) return s;
-    double dist = std::sqrt(dist2);
-    s.wi = Vec3f(d * (1.0 / dist));
-    double abs_cos_times_dist = std::abs(dot(Vec3d(n), d));  // |cos theta_light| * dist
-    s.pdf = abs_cos_times_dist == 0.0 ? kInfinity : static_cast<float>(pdf_area * dist2 * dist / abs_cos_times_dist);
+    Vec3f d = p - ref;
+    float dist2 = dot(d, d);
+    if (dist2 == 0.0f) return s;
+    float dist = std::sqrt(dist2);
+    s.wi = d * (1.0f / dist);
+    float abs_cos_times_dist = std::abs(dot(n, d));  // |cos theta_light| * dist
+    s.pdf = abs_cos_times_dist == 0.0f ? kInfinity : pdf_area * dist2 * (dist / abs_cos_times_dist);
     return s;
 }
 
 // The density alone (emitters' pdf()); bit-identical to solid_angle_density's.
-CANDELA_HD inline float solid_angle_pdf(double pdf_area, const Vec3f& ref, const Vec3f& p, const Vec3f& n) {
+CANDELA_HD inline float solid_angle_pdf(float pdf_area, const Vec3f& ref, const Vec3f& p, const Vec3f& n) {
     return solid_angle_density(pdf_area, ref, p, n).pdf;
 }
 

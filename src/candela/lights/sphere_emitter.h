@@ -62,7 +62,7 @@ CANDELA_HD inline double SphereEmitter::cone_one_minus_cos_max(const Vec3f& ref)
 CANDELA_HD inline float SphereEmitter::pdf(const Vec3f& ref, const Vec3f& p, const Vec3f& n) const {
     double one_minus_cos_max = cone_one_minus_cos_max(ref);
     if (one_minus_cos_max > 0.0) return static_cast<float>(1.0 / (2.0 * kPiD * one_minus_cos_max));
-    return solid_angle_pdf(1.0 / (4.0 * kPiD * sphere.radius * sphere.radius), ref, p, n);
+    return solid_angle_pdf(static_cast<float>(1.0 / (4.0 * kPiD * sphere.radius * sphere.radius)), ref, p, n);
 }
 
 CANDELA_HD inline std::optional<EmitterSample> SphereEmitter::sample(const Vec3f& ref, Vec2f u) const {
