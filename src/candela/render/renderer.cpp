@@ -4,6 +4,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -144,6 +145,10 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
     };
 
     // One pass over all tiles, in parallel; a stop seen before a tile abandons the rest.
+    // One task per tile (simple_partitioner): the default partitioner hands a thread runs of
+    // tiles that it then renders alone, so at the end of a pass the other threads idle while it
+    // finishes its run. With passes that end often, that cost 4% at 2 threads (bench/RESULTS.md);
+    // a tile is milliseconds of work, far above a task's cost.
     auto run_pass = [&](tbb::task_arena& arena, const Pass& pass, ProgressBar& progress) {
         const uint64_t n = pass.end - pass.begin;
         arena.execute([&] {
@@ -164,7 +169,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
                     uint64_t tile_pixels = uint64_t(tile.x1 - tile.x0) * uint64_t(tile.y1 - tile.y0);
                     progress.advance(tile_pixels * n, tally.rays.total() - rays_before);
                 }
-            });
+            }, tbb::simple_partitioner());
         });
     };
 
