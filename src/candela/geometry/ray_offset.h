@@ -3,14 +3,13 @@
 // (pbrt-v4's approach; Pharr, Jakob, Humphreys, "Physically Based Rendering", 4th ed., 6.8).
 // A hit point is computed on the surface with a conservative per-axis bound on its rounding
 // error (SurfaceHit::p_error). Moving the origin along the geometric normal by the projection of
-// that error box onto the normal, then one float further away, puts it strictly on the chosen
+// that error box onto the normal, plus the rounding of that move, puts it strictly on the chosen
 // side of the true surface, so the new ray cannot hit the surface where it starts.
 #include <cmath>
 #include <limits>
 
 #include "candela/core/platform.h"
 #include "candela/geometry/surface_hit.h"
-#include "candela/math/next_float.h"
 #include "candela/math/ray.h"
 
 namespace candela {
@@ -23,20 +22,18 @@ CANDELA_HD constexpr float rounding_gamma(int n) {
 }
 
 // p moved off the surface to the side of unit geometric normal n, out of its error box.
+// pbrt-v4 adds n d (d: the error box projected onto n) and then steps each coordinate one float
+// further along n, because the addition rounds, possibly back towards the surface. Here the
+// rounding is paid for in d instead, which needs no per-coordinate branches: with u = 2^-24,
+// the product n_i d' and the sum p_i + n_i d' round by at most u of their size, which moves the
+// point along n by at most u (d' + |p|_1) plus u d' from n's own rounding; so
+// d' = (d + 2u |p|_1) (1 + 8u) leaves it at least d + u |p|_1 out: beyond the box whenever p
+// or its error is nonzero (for every hit but one exactly at the origin with no error).
 CANDELA_HD inline Vec3f offset_ray_origin(const Vec3f& p, const Vec3f& p_error, const Vec3f& n) {
-    float d = dot(abs(n), p_error);
-    Vec3f offset = n * d;
-    Vec3f po = p + offset;
-    // The addition above rounds, possibly back towards the surface: step one float further out
-    // along n. The step follows n, not the offset, so that an exact point (zero error, e.g. on a
-    // plane through the origin) still leaves the surface: Embree counts hits at t = tmin = 0.
-    for (int i = 0; i < 3; ++i) {
-        if (n[i] > 0.0f)
-            po[i] = next_float_up(po[i]);
-        else if (n[i] < 0.0f)
-            po[i] = next_float_down(po[i]);
-    }
-    return po;
+    constexpr float u = std::numeric_limits<float>::epsilon() * 0.5f;
+    const Vec3f abs_p = abs(p);
+    const float d = (dot(abs(n), p_error) + 2.0f * u * (abs_p.x + abs_p.y + abs_p.z)) * (1.0f + 8.0f * u);
+    return p + n * d;
 }
 
 // A ray leaving the hit in direction w (either side of the surface).
