@@ -33,7 +33,7 @@ CANDELA_HD inline Vec2f sample_concentric_disk(Vec2f u) {
     // Concentric squares map to concentric circles; the larger coordinate picks the wedge. The
     // angle is (pi/4) (b/a) in the first, pi/2 - (pi/4) (a/b) in the second: cos and sin swap.
     // Selects instead of branches: the wedge is random (math/select.h).
-    bool wide = std::abs(a) > std::abs(b);
+    SelectMask wide = greater(std::abs(a), std::abs(b));
     float r = select(wide, a, b);
     float t = r != 0.0f ? select(wide, b, a) / r : 0.0f;  // r = 0 only for a = b = 0: the centre
     Vec2f cs = cos_sin_quarter_pi(t);
@@ -98,7 +98,7 @@ CANDELA_HD inline float uniform_cone_pdf(Vec3f w, float cos_theta_max) {
 CANDELA_HD inline Vec3f sample_uniform_triangle(Vec2f u) {
     // Halve the smaller coordinate and subtract it from the larger (selects, not a branch: which
     // one is smaller is random; math/select.h).
-    bool x_smaller = u.x < u.y;
+    SelectMask x_smaller = greater(u.y, u.x);
     float half = 0.5f * select(x_smaller, u.x, u.y);
     float rest = select(x_smaller, u.y, u.x) - half;
     float b0 = select(x_smaller, half, rest);
