@@ -163,16 +163,19 @@ struct Accelerator::Impl {
         // vertices far out in x and z still needs an offset along y of that magnitude (and a
         // zero bound would leave only a denormal step, which FTZ/DAZ flushes away).
         h.p_error = Vec3f(max_component(abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * rounding_gamma(7));
-        h.ng = winding_normal(p0, p1, p2);
-        h.ns = h.ng;
+        // Both normals from registers: copying h.ng into h.ns read back the two stores just made
+        // with one wider load, which cannot be forwarded (a stall on every hit).
+        Vec3f ng = winding_normal(p0, p1, p2), ns = ng;
         if (!mesh.normals.empty()) {
             Vec3f n = mesh.normals[i0] * b0 + mesh.normals[i1] * b1 + mesh.normals[i2] * b2;
             float len = length(n);
             if (len > 0.0f) {
-                h.ns = n / len;
-                h.ng = face_forward(h.ng, h.ns);  // pbrt's rule: the normals agree on the front
+                ns = n / len;
+                ng = face_forward(ng, ns);  // pbrt's rule: the normals agree on the front
             }
         }
+        h.ng = ng;
+        h.ns = ns;
     }
 
     static void make_sphere_hit(const RTCRayHit& rh, const Ray& ray, const Sphere& s, SurfaceHit& h) {
@@ -185,8 +188,9 @@ struct Accelerator::Impl {
         // The double projection is exact to far below float precision; rounding it to float
         // dominates. gamma(5) |p| as pbrt-v4 uses for reprojected sphere points (6.8.5).
         h.p_error = Vec3f(max_component(abs(h.p)) * rounding_gamma(5));
-        h.ng = normalize(Vec3f(s.reverse_orientation ? -n : n));
-        h.ns = h.ng;
+        Vec3f ng = normalize(Vec3f(s.reverse_orientation ? -n : n));
+        h.ng = ng;
+        h.ns = ng;
         h.b = Vec2f(0.0f, 0.0f);
     }
 };
