@@ -27,7 +27,13 @@ CANDELA_HD inline Vec2f cos_sin_quarter_pi(float t) {
 
 // Uniform point on the unit disk by Shirley and Chiu's concentric map (1997, "A Low Distortion
 // Map Between Disk and Square"): it keeps strata compact, unlike the polar r = sqrt(u) map.
-CANDELA_HD inline Vec2f sample_concentric_disk(Vec2f u) {
+// Also returns the point's radius r (its length up to the rounding of cos and sin), known
+// before the angle's polynomials are evaluated.
+struct ConcentricDiskSample {
+    Vec2f p;
+    float r = 0.0f;  // in [0, 1]
+};
+CANDELA_HD inline ConcentricDiskSample sample_concentric_disk_and_radius(Vec2f u) {
     float a = 2.0f * u.x - 1.0f;
     float b = 2.0f * u.y - 1.0f;
     // Concentric squares map to concentric circles; the larger coordinate picks the wedge. The
@@ -37,8 +43,9 @@ CANDELA_HD inline Vec2f sample_concentric_disk(Vec2f u) {
     float r = select(wide, a, b);
     float t = r != 0.0f ? select(wide, b, a) / r : 0.0f;  // r = 0 only for a = b = 0: the centre
     Vec2f cs = cos_sin_quarter_pi(t);
-    return {r * select(wide, cs.x, cs.y), r * select(wide, cs.y, cs.x)};
+    return {{r * select(wide, cs.x, cs.y), r * select(wide, cs.y, cs.x)}, std::abs(r)};
 }
+CANDELA_HD inline Vec2f sample_concentric_disk(Vec2f u) { return sample_concentric_disk_and_radius(u).p; }
 // Per unit area of the plane: 1/pi inside the unit disk.
 CANDELA_HD inline float concentric_disk_pdf(Vec2f p) {
     return p.x * p.x + p.y * p.y <= 1.0f ? kInvPi : 0.0f;
@@ -69,9 +76,11 @@ CANDELA_HD inline float uniform_hemisphere_pdf(Vec3f w) { return w.z >= 0.0f ? k
 // Cosine-weighted direction on the hemisphere z >= 0 (Malley's method: a uniform disk point
 // lifted onto the hemisphere has density cos(theta)/pi).
 CANDELA_HD inline Vec3f sample_cosine_hemisphere(Vec2f u) {
-    Vec2f d = sample_concentric_disk(u);
-    float z = safe_sqrt(1.0f - d.x * d.x - d.y * d.y);
-    return {d.x, d.y, z};
+    ConcentricDiskSample d = sample_concentric_disk_and_radius(u);
+    // z from the radius rather than from the point: the square root then runs beside the angle's
+    // polynomials instead of after them (it is on the path's critical chain, bench/RESULTS.md).
+    float z = safe_sqrt(1.0f - d.r * d.r);
+    return {d.p.x, d.p.y, z};
 }
 // Per unit solid angle: cos(theta)/pi for z >= 0, else 0.
 CANDELA_HD inline float cosine_hemisphere_pdf(Vec3f w) { return w.z >= 0.0f ? w.z * kInvPi : 0.0f; }
