@@ -74,7 +74,7 @@ TEST(Warps, ConcentricDiskStaysInTheDiskAndMapsTheCentreToTheOrigin) {
         EXPECT_EQ(p, d.p);
         EXPECT_LE(p.x * p.x + p.y * p.y, 1.0f + 1e-6f);
         // The radius the cosine warp lifts from is the point's own, to float rounding.
-        EXPECT_NEAR(d.r, std::sqrt(double(p.x) * p.x + double(p.y) * p.y), 1e-6);
+        EXPECT_NEAR(double(d.r), std::sqrt(double(p.x) * double(p.x) + double(p.y) * double(p.y)), 1e-6);
     }
     EXPECT_EQ(sample_concentric_disk(Vec2f(0.5f, 0.5f)), Vec2f(0.0f, 0.0f));
     Vec2f edge = sample_concentric_disk(Vec2f(kOneMinusEpsilon, 0.5f));  // middle of the right edge
