@@ -62,6 +62,42 @@ TEST(Accelerator, VertexNormalsSetShadingNormalAndFlipGeometricNormal) {
     EXPECT_GT(hit->ns.x, 0.0f);  // interpolated, not the face normal
 }
 
+// A small mesh's hits read its normal table, a large one's compute the normal: both must report
+// winding_normal of the triangle hit, bit for bit (light samples on emitting meshes use it too).
+TEST(Accelerator, HitNormalsAreTheWindingNormalsWithOrWithoutTheTable) {
+    // Grids of n x n cells (two triangles each) in the plane z = 1 + (x + y) / 8, around the
+    // z axis; the first below the table's size, the second above it.
+    auto tilted_grid = [](int n) {
+        TriangleMesh m;
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) {
+                float x = -1.0f + 2.0f * float(i) / float(n), y = -1.0f + 2.0f * float(j) / float(n);
+                m.positions.push_back({x, y, 1.0f + 0.125f * (x + y) + 0.01f * float((i * 7 + j * 3) % 5)});
+            }
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                uint32_t a = uint32_t(j * (n + 1) + i), b = a + 1, c = a + uint32_t(n + 1), d = c + 1;
+                m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
+            }
+        return m;
+    };
+    for (int n : {8, 200}) {
+        TriangleMesh grid = tilted_grid(n);
+        ASSERT_EQ(grid.triangle_count() > kMaxTrianglesWithNormalTable, n == 200);
+        TestScene scene({grid}, {});
+        Rng rng(7, uint64_t(n));
+        for (int k = 0; k < 500; ++k) {
+            Vec2f u = rng.next_vec2f();
+            auto hit = scene.accel->intersect(Ray{{1.6f * u.x - 0.8f, 1.6f * u.y - 0.8f, -1.0f}, {0, 0, 1}});
+            ASSERT_TRUE(hit);
+            const uint32_t* v = &grid.indices[3 * size_t(hit->prim_id)];
+            Vec3f expected = winding_normal(grid.positions[v[0]], grid.positions[v[1]], grid.positions[v[2]]);
+            EXPECT_EQ(hit->ng, expected) << "grid " << n << ", triangle " << hit->prim_id;
+            EXPECT_EQ(hit->ns, expected);
+        }
+    }
+}
+
 TEST(Accelerator, SphereHitAndReverseOrientation) {
     TestScene scene({}, {Sphere{{0, 0, 5}, 1.0, false}, Sphere{{0, 0, -5}, 1.0, true}});
     auto hit = scene.accel->intersect(Ray{{0, 0, 0}, {0, 0, 1}});

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <string>
 
+#include "candela/geometry/accelerator.h"
+
 namespace candela {
 namespace {
 
@@ -27,10 +29,13 @@ TEST(MemoryEstimate, FilmTakes72BytesPerPixel) {
 
 TEST(MemoryEstimate, MeshGrowsWithCountsAndAttributes) {
     const uint64_t plain = mesh_memory_bytes(1000, 2000, false, false);
-    EXPECT_EQ(plain, 1000u * 24 + 2000u * 128);
+    EXPECT_EQ(plain, 1000u * 24 + 2000u * 152);
     EXPECT_EQ(mesh_memory_bytes(1000, 2000, true, false), plain + 1000u * 12);
     EXPECT_EQ(mesh_memory_bytes(1000, 2000, true, true), plain + 1000u * 20);
     EXPECT_GT(mesh_memory_bytes(1000, 2001, false, false), plain);
+    // Meshes beyond the normal table's size do without it (geometry/accelerator.h).
+    const uint64_t big = kMaxTrianglesWithNormalTable + 1;
+    EXPECT_EQ(mesh_memory_bytes(1000, big, false, false), 1000u * 24 + big * 140);
 }
 
 TEST(MemoryEstimate, SaturatesInsteadOfWrapping) {

@@ -45,6 +45,18 @@ void sphere_bounds(const RTCBoundsFunctionArguments* args) {
     b->upper_z = hi(s.center.z + s.radius);
 }
 
+// winding_normal of every triangle of a mesh small enough to keep them (else none).
+std::vector<Vec3f> face_normals(const TriangleMesh& mesh) {
+    std::vector<Vec3f> normals;
+    if (mesh.triangle_count() > kMaxTrianglesWithNormalTable) return normals;
+    normals.reserve(mesh.triangle_count());
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        const uint32_t* v = &mesh.indices[3 * t];
+        normals.push_back(winding_normal(mesh.positions[v[0]], mesh.positions[v[1]], mesh.positions[v[2]]));
+    }
+    return normals;
+}
+
 std::optional<double> intersect_embree_ray(const Sphere& s, const RTCRay& r) {
     return intersect_sphere(s, Vec3d(r.org_x, r.org_y, r.org_z), Vec3d(r.dir_x, r.dir_y, r.dir_z),
                             double(r.tnear), double(r.tfar));
@@ -99,6 +111,9 @@ struct Accelerator::Impl {
     struct Geometry {
         const TriangleMesh* mesh = nullptr;
         const Sphere* sphere = nullptr;
+        // A small mesh's winding normals, one per triangle (kMaxTrianglesWithNormalTable); empty
+        // for larger meshes, whose hits normalize the cross product themselves.
+        std::vector<Vec3f> face_normals;
     };
     std::vector<Geometry> geometries;
     RTCDevice device = nullptr;
@@ -144,7 +159,8 @@ struct Accelerator::Impl {
 
     // The hit records are written in place, into the caller's optional: a returned copy of a
     // just-written struct would stall on store forwarding once per ray.
-    static void make_triangle_hit(const RTCRayHit& rh, const TriangleMesh& mesh, SurfaceHit& h) {
+    static void make_triangle_hit(const RTCRayHit& rh, const Geometry& g, SurfaceHit& h) {
+        const TriangleMesh& mesh = *g.mesh;
         uint32_t tri = rh.hit.primID;
         uint32_t i0 = mesh.indices[3 * tri], i1 = mesh.indices[3 * tri + 1], i2 = mesh.indices[3 * tri + 2];
         float b1 = rh.hit.u, b2 = rh.hit.v, b0 = 1.0f - b1 - b2;
@@ -165,7 +181,7 @@ struct Accelerator::Impl {
         h.p_error = Vec3f(max_component(abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * rounding_gamma(7));
         // Both normals from registers: copying h.ng into h.ns read back the two stores just made
         // with one wider load, which cannot be forwarded (a stall on every hit).
-        Vec3f ng = winding_normal(p0, p1, p2), ns = ng;
+        Vec3f ng = g.face_normals.empty() ? winding_normal(p0, p1, p2) : g.face_normals[tri], ns = ng;
         if (!mesh.normals.empty()) {
             Vec3f n = mesh.normals[i0] * b0 + mesh.normals[i1] * b1 + mesh.normals[i2] * b2;
             float len = length(n);
@@ -202,7 +218,7 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
     m.geometries.resize(shapes.size());
     for (size_t id = 0; id < shapes.size(); ++id) {
         if (shapes[id].kind == ShapeKind::kMesh)
-            m.geometries[id].mesh = &meshes[shapes[id].index];
+            m.geometries[id] = {&meshes[shapes[id].index], nullptr, face_normals(meshes[shapes[id].index])};
         else
             m.geometries[id].sphere = &spheres[shapes[id].index];
     }
@@ -241,7 +257,7 @@ std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
     if (g.sphere)
         Impl::make_sphere_hit(rh, ray, *g.sphere, result.emplace());
     else
-        Impl::make_triangle_hit(rh, *g.mesh, result.emplace());
+        Impl::make_triangle_hit(rh, g, result.emplace());
     return result;
 }
 

@@ -33,6 +33,13 @@ class RayObserver {
 // relaxed atomic load and a branch per query). Not for use while a render is running.
 void set_ray_observer(RayObserver* observer);
 
+// Meshes of up to this many triangles keep a table of their winding normals (12 B a triangle),
+// which hits read instead of normalizing a cross product: a shorter chain from Embree's answer to
+// the next ray while the table sits in cache (2.5% of a Cornell box render), and no gain on the
+// 870k-triangle dragon, whose table would miss the cache as often as its vertices do
+// (bench/RESULTS.md).
+inline constexpr size_t kMaxTrianglesWithNormalTable = size_t(1) << 16;
+
 class Accelerator {
   public:
     // The spans must outlive the accelerator: hits read vertex data from them.

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "candela/geometry/accelerator.h"
 #include "candela/scene/scene.h"
 
 namespace candela {
@@ -27,8 +28,10 @@ constexpr uint64_t kNormalBytes = 12;
 constexpr uint64_t kUvBytes = 8;
 // Per triangle: its three indices and Embree's copy (12 + 12), the BVH with its build-time
 // references (96; a grid of 2M triangles peaked at about 70 B per triangle beyond the mesh, its
-// copies and the file), and the area table of an emitting mesh (8).
-constexpr uint64_t kTriangleBytes = 12 + 12 + 96 + 8;
+// copies and the file), and an emitting mesh's area table and normals (8 + 12); plus the winding
+// normal hits read, in meshes small enough to keep one (geometry/accelerator.h).
+constexpr uint64_t kTriangleBytes = 12 + 12 + 96 + 8 + 12;
+constexpr uint64_t kNormalTableBytes = 12;
 // While an OBJ loads: tinyobjloader's attribute arrays (up to 32 B per vertex for v, vn and vt)
 // and its index triples (12 B per corner), plus our corner-to-vertex hash map (about 64 B per
 // corner, an upper bound on the distinct ones).
@@ -95,7 +98,8 @@ uint64_t film_memory_bytes(int width, int height) {
 
 uint64_t mesh_memory_bytes(uint64_t vertices, uint64_t triangles, bool normals, bool uvs) {
     const uint64_t per_vertex = kPositionBytes + (normals ? kNormalBytes : 0) + (uvs ? kUvBytes : 0);
-    return plus(times(vertices, per_vertex), times(triangles, kTriangleBytes));
+    const uint64_t per_triangle = kTriangleBytes + (triangles <= kMaxTrianglesWithNormalTable ? kNormalTableBytes : 0);
+    return plus(times(vertices, per_vertex), times(triangles, per_triangle));
 }
 
 uint64_t mesh_loading_memory_bytes(uint64_t vertices, uint64_t corners) {
