@@ -153,6 +153,27 @@ TEST(Sampler, SkippedRequestsLeaveTheOthersUnchanged) {
     }
 }
 
+// The pixel's shared request keys change nothing: every request, cached (the first
+// PixelSampler::kCachedKeys) or not, 1D or 2D, skipped or drawn, gives the bits the stand-alone
+// sampler gives, for both kinds.
+TEST(Sampler, PixelSamplerGivesTheStandAloneSamplersNumbers) {
+    for (SamplerType type : {SamplerType::kSobol, SamplerType::kIndependent})
+        for (uint64_t pixel : {uint64_t(0), uint64_t(77), uint64_t(1) << 40}) {
+            const PixelSampler shared(type, pixel, 12345);
+            for (uint32_t s = 0; s < 9; ++s) {
+                Sampler a = shared.sample(s), b(type, pixel, s, 12345);
+                for (uint32_t r = 0; r < 3 * PixelSampler::kCachedKeys; ++r) {
+                    switch (r % 4) {
+                        case 0: ASSERT_EQ(a.next_float(), b.next_float()) << r; break;
+                        case 1: ASSERT_EQ(a.next_vec2f(), b.next_vec2f()) << r; break;
+                        case 2: a.skip_vec2f(); b.skip_vec2f(); break;
+                        default: a.skip_float(); b.skip_float(); break;
+                    }
+                }
+            }
+        }
+}
+
 TEST(Sampler, SobolIsDeterministicAndInTheUnitSquare) {
     for (uint32_t i = 0; i < 1000; ++i) {
         Sampler a(SamplerType::kSobol, 9, i, 1), b(SamplerType::kSobol, 9, i, 1);

@@ -65,9 +65,9 @@ struct SampleContext {
 // Camera sample `s` of pixel (x, y), added to the pixel's running sum, or dropped (counted) when
 // it is NaN or Inf. Its random numbers are a pure function of (pixel, s, seed), so the sum is the
 // same whichever thread computes it and however the samples are split into passes.
-void take_sample(const SampleContext& c, int x, int y, uint32_t s, PixelSum& sum, ThreadTally& tally) {
-    const uint64_t pixel = uint64_t(y) * uint64_t(c.width) + uint64_t(x);
-    Sampler sampler(c.sampler_type, pixel, s, c.seed);
+void take_sample(const SampleContext& c, int x, int y, uint32_t s, const PixelSampler& pixel_sampler, PixelSum& sum,
+                 ThreadTally& tally) {
+    Sampler sampler = pixel_sampler.sample(s);
     Vec2f film_pos = Vec2f(float(x), float(y)) + sample_filter(c.filter, s, sampler.next_vec2f());
     Rgb L = c.integrator.radiance(c.camera.generate_ray(film_pos), sampler, tally.rays);
     if (!L.is_finite()) {
@@ -162,7 +162,11 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
                     for (int y = tile.y0; y < tile.y1; ++y) {
                         for (int x = tile.x0; x < tile.x1; ++x) {
                             PixelSum sum = pass.from->sum(x, y);
-                            for (uint32_t s = pass.begin; s < pass.end; ++s) take_sample(context, x, y, s, sum, tally);
+                            const PixelSampler pixel_sampler(context.sampler_type,
+                                                       uint64_t(y) * uint64_t(context.width) + uint64_t(x),
+                                                       context.seed);
+                            for (uint32_t s = pass.begin; s < pass.end; ++s)
+                                take_sample(context, x, y, s, pixel_sampler, sum, tally);
                             pass.to->sum(x, y) = sum;
                         }
                     }
