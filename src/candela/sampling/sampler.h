@@ -56,6 +56,7 @@ class PixelSampler {
     SamplerType type_;
     uint64_t pixel_index_;
     uint64_t seed_;
+    uint64_t pixel_key_ = 0;      // sobol only: Sampler::hash_pixel(seed, pixel_index)
     uint64_t keys_[kCachedKeys];  // sobol only
 };
 
@@ -69,13 +70,16 @@ class Sampler {
             pixel_key_ = hash_pixel(seed, pixel_index);
         reversed_index_ = reverse_bits(sample_index);
     }
-    // The same sampler, reading the pixel's request keys (PixelSampler::sample).
-    Sampler(const PixelSampler& pixel, uint32_t sample_index)
-        : Sampler(pixel.type_, pixel.pixel_index_, sample_index, pixel.seed_) {
-        if (type_ == SamplerType::kSobol) {
+    // The same sampler, reading the pixel's key and request keys (PixelSampler::sample).
+    Sampler(const PixelSampler& pixel, uint32_t sample_index) : type_(pixel.type_), index_(sample_index) {
+        if (type_ == SamplerType::kIndependent) {
+            rng_ = Rng::for_sample(pixel.pixel_index_, sample_index, pixel.seed_);
+        } else {
+            pixel_key_ = pixel.pixel_key_;
             key_cache_ = pixel.keys_;
             cached_keys_ = PixelSampler::kCachedKeys;
         }
+        reversed_index_ = reverse_bits(sample_index);
     }
 
     // A uniform number in [0, 1), never 1.0.
@@ -162,8 +166,8 @@ class Sampler {
 inline PixelSampler::PixelSampler(SamplerType type, uint64_t pixel_index, uint64_t seed)
     : type_(type), pixel_index_(pixel_index), seed_(seed) {
     if (type != SamplerType::kSobol) return;
-    const uint64_t pixel_key = Sampler::hash_pixel(seed, pixel_index);
-    for (uint32_t r = 0; r < kCachedKeys; ++r) keys_[r] = Sampler::hash_request(pixel_key, r);
+    pixel_key_ = Sampler::hash_pixel(seed, pixel_index);
+    for (uint32_t r = 0; r < kCachedKeys; ++r) keys_[r] = Sampler::hash_request(pixel_key_, r);
 }
 
 inline Sampler PixelSampler::sample(uint32_t sample_index) const { return Sampler(*this, sample_index); }
