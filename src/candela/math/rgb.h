@@ -24,7 +24,10 @@ struct Rgb {
     CANDELA_HD constexpr bool operator==(const Rgb&) const = default;
 
     CANDELA_HD constexpr bool is_black() const { return r == 0 && g == 0 && b == 0; }
-    CANDELA_HD constexpr float max_component() const { return r > g ? (r > b ? r : b) : (g > b ? g : b); }
+    CANDELA_HD constexpr float max_component() const {
+        float m = r > g ? r : g;  // two maxss, no branch (vec.h's max_component)
+        return m > b ? m : b;
+    }
     CANDELA_HD constexpr float average() const { return (r + g + b) / 3.0f; }
     // Rec. 709 luminance.
     CANDELA_HD constexpr float luminance() const { return 0.2126f * r + 0.7152f * g + 0.0722f * b; }
