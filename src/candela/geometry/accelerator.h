@@ -35,7 +35,7 @@ void set_ray_observer(RayObserver* observer);
 
 // Meshes of up to this many triangles keep a table of their winding normals (12 B a triangle),
 // which hits read instead of normalizing a cross product: a shorter chain from Embree's answer to
-// the next ray while the table sits in cache (2.5% of a Cornell box render), and no gain on the
+// the next ray while the table sits in cache (1.7% of a Cornell box render), and no gain on the
 // 870k-triangle dragon, whose table would miss the cache as often as its vertices do
 // (bench/RESULTS.md).
 inline constexpr size_t kMaxTrianglesWithNormalTable = size_t(1) << 16;

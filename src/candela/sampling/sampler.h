@@ -40,7 +40,7 @@ class Sampler;
 // What the samples of one pixel share. For sobol, the hash (key) of each request depends only on
 // (seed, pixel, request number), not on the sample: the first kCachedKeys keys are computed once
 // for the pixel and read by all its samples. A key heads the dependency chain of every request,
-// so this shortens the chain by a 64-bit hash (1.4% of a Cornell box render, bench/RESULTS.md).
+// so this shortens the chain by a 64-bit hash (1.3% of a Cornell box render, bench/RESULTS.md).
 // The renderer makes one per pixel and pass; it must outlive the samplers it makes.
 class PixelSampler {
   public:
