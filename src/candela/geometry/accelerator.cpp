@@ -45,18 +45,6 @@ void sphere_bounds(const RTCBoundsFunctionArguments* args) {
     b->upper_z = hi(s.center.z + s.radius);
 }
 
-// winding_normal of every triangle of a mesh small enough to keep them (else none).
-std::vector<Vec3f> face_normals(const TriangleMesh& mesh) {
-    std::vector<Vec3f> normals;
-    if (mesh.triangle_count() > kMaxTrianglesWithNormalTable) return normals;
-    normals.reserve(mesh.triangle_count());
-    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
-        const uint32_t* v = &mesh.indices[3 * t];
-        normals.push_back(winding_normal(mesh.positions[v[0]], mesh.positions[v[1]], mesh.positions[v[2]]));
-    }
-    return normals;
-}
-
 std::optional<double> intersect_embree_ray(const Sphere& s, const RTCRay& r) {
     return intersect_sphere(s, Vec3d(r.org_x, r.org_y, r.org_z), Vec3d(r.dir_x, r.dir_y, r.dir_z),
                             double(r.tnear), double(r.tfar));
@@ -217,10 +205,13 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
     Impl& m = *impl_;
     m.geometries.resize(shapes.size());
     for (size_t id = 0; id < shapes.size(); ++id) {
-        if (shapes[id].kind == ShapeKind::kMesh)
-            m.geometries[id] = {&meshes[shapes[id].index], nullptr, face_normals(meshes[shapes[id].index])};
-        else
+        if (shapes[id].kind == ShapeKind::kMesh) {
+            const TriangleMesh& mesh = meshes[shapes[id].index];
+            m.geometries[id].mesh = &mesh;
+            if (mesh.triangle_count() <= kMaxTrianglesWithNormalTable) m.geometries[id].face_normals = winding_normals(mesh);
+        } else {
             m.geometries[id].sphere = &spheres[shapes[id].index];
+        }
     }
     m.device = rtcNewDevice(nullptr);
     if (!m.device) throw RenderError("cannot create the Embree device");

@@ -19,6 +19,16 @@ void transform_mesh(TriangleMesh& mesh, const Transform& to_world, bool reverse_
     }
 }
 
+std::vector<Vec3f> winding_normals(const TriangleMesh& mesh) {
+    std::vector<Vec3f> normals;
+    normals.reserve(mesh.triangle_count());
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        const uint32_t* v = &mesh.indices[3 * t];
+        normals.push_back(winding_normal(mesh.positions[v[0]], mesh.positions[v[1]], mesh.positions[v[2]]));
+    }
+    return normals;
+}
+
 TriangleMesh make_quad(const Vec3f& corner, const Vec3f& edge1, const Vec3f& edge2) {
     TriangleMesh m;
     m.positions = {corner, corner + edge1, corner + edge1 + edge2, corner + edge2};

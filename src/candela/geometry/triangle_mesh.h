@@ -24,6 +24,9 @@ struct TriangleMesh {
 inline Vec3f winding_normal(const Vec3f& p0, const Vec3f& p1, const Vec3f& p2) {
     return normalize(cross(p1 - p0, p2 - p0));
 }
+// winding_normal of every triangle, in triangle order (NaN for a zero-area one): the table that
+// hits and mesh-light samples read instead of normalizing a cross product each time.
+std::vector<Vec3f> winding_normals(const TriangleMesh& mesh);
 
 // Moves an object-space mesh to world space and resolves its front side, as DESIGN.md's scene
 // format says (pbrt's rule): positions by `to_world`; vertex normals by its inverse transpose; the

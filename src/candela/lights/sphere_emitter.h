@@ -101,7 +101,8 @@ CANDELA_HD inline std::optional<EmitterSample> SphereEmitter::sample(const Vec3f
     es.n = front_normal(n_out);
     es.pdf = pdf(ref, es.p, es.n);
     if (!(es.pdf > 0.0f) || !std::isfinite(es.pdf)) return std::nullopt;
-    // In double: far from the origin (smallpt's 1e5) a float difference keeps few bits.
+    // In double, as the rest of this sphere's geometry (a float difference would be correctly
+    // rounded too, emitter.h).
     Vec3d d = Vec3d(es.p) - Vec3d(ref);
     es.wi = Vec3f(d * (1.0 / length(d)));
     return es;
