@@ -1,57 +1,83 @@
 #pragma once
-// A material is a BSDF: a list of lobes whose values add (see bsdf.h). The scene file's material
-// types are the constructors below; `mix` concatenates the lobes of others.
+// A material: up to Bsdf::kMaxLobes lobes whose values add (see bsdf.h), each described by its
+// parameters (lobe_params.h). The scene file's material types are the constructors below; `mix`
+// concatenates the lobes of others.
+//
+// Most materials have no textured parameter: their BSDF is the same at every point and is built
+// once (`bsdf`), so the path tracer reads it in place, as before textures existed. A textured
+// material builds its BSDF at each hit from the texture values there (build_bsdf).
+#include <array>
 #include <span>
 
 #include "candela/core/check.h"
 #include "candela/materials/bsdf.h"
+#include "candela/materials/lobe_params.h"
 
 namespace candela {
 
 struct Material {
-    Bsdf bsdf;
+    Bsdf bsdf;  // the lobes at the parameters' constant values (all of them when !textured)
+    std::array<LobeParams, Bsdf::kMaxLobes> params{};  // lobe k of bsdf comes from params[k]
+    bool textured = false;  // some parameter is a texture: use build_bsdf at each hit
 };
 
-// A material of the one lobe `lobe`.
-CANDELA_HD inline Material make_material(const BsdfLobe& lobe) {
+// The material's BSDF at a shading point.
+CANDELA_HD inline Bsdf build_bsdf(const Material& m, const TextureSet& textures, const TextureContext& ctx) {
+    Bsdf bsdf;
+    bsdf.lobe_count = m.bsdf.lobe_count;
+    for (uint32_t k = 0; k < m.bsdf.lobe_count; ++k)
+        bsdf.lobes[k] = visit([&](const auto& p) { return p.lobe(textures, ctx); }, m.params[k]);
+    return bsdf;
+}
+
+// A material of the lobes `parts` describe (at most Bsdf::kMaxLobes; the scene loader checks).
+inline Material make_material(std::span<const LobeParams> parts) {
+    CANDELA_CHECK(parts.size() <= Bsdf::kMaxLobes);
     Material m;
-    m.bsdf.lobes[0] = lobe;
-    m.bsdf.lobe_count = 1;
+    const TextureSet no_textures;
+    const TextureContext anywhere{};
+    for (const LobeParams& p : parts) {
+        const uint32_t k = m.bsdf.lobe_count++;
+        m.params[k] = p;
+        // Textured parameters contribute their constant here; build_bsdf replaces the lobe.
+        m.bsdf.lobes[k] = visit([&](const auto& q) { return q.lobe(no_textures, anywhere); }, p);
+        m.textured = m.textured || visit([](const auto& q) { return q.is_textured(); }, p);
+    }
     return m;
 }
 
+// A material of the one lobe `p`.
+inline Material make_material(const LobeParams& p) { return make_material(std::span<const LobeParams>(&p, 1)); }
+
 // `diffuse`: Lambertian reflection of the given albedo.
-CANDELA_HD inline Material make_diffuse(Rgb albedo) {
-    return make_material(LambertianLobe{albedo});
-}
+inline Material make_diffuse(Rgb albedo) { return make_material(DiffuseParams{ColorParam{albedo}}); }
 
 // `mirror`: perfect specular reflection scaled by albedo.
-CANDELA_HD inline Material make_mirror(Rgb albedo) {
-    return make_material(SpecularReflectionLobe{albedo});
-}
+inline Material make_mirror(Rgb albedo) { return make_material(MirrorParams{ColorParam{albedo}}); }
 
 // `dielectric`: smooth glass of index `ior` (inside over outside) reflecting and refracting in
 // Fresnel's proportions, exact or by Schlick's approximation.
-CANDELA_HD inline Material make_dielectric(float ior, Rgb tint = Rgb(1.0f), bool schlick = false) {
-    return make_material(FresnelSpecularLobe{tint, ior, schlick});
+inline Material make_dielectric(float ior, Rgb tint = Rgb(1.0f), bool schlick = false) {
+    return make_material(DielectricParams{ior, ColorParam{tint}, schlick});
 }
 
 // `transmission`: the refracted part of a dielectric only (1 - F); the reflected part is lost.
-CANDELA_HD inline Material make_transmission(float ior, Rgb tint = Rgb(1.0f)) {
-    return make_material(SpecularTransmissionLobe{tint, ior});
+inline Material make_transmission(float ior, Rgb tint = Rgb(1.0f)) {
+    return make_material(TransmissionParams{ior, ColorParam{tint}});
 }
 
 // `mix`: the lobes of `parts`, in order, in one material (their f add up). The parts may hold at
 // most Bsdf::kMaxLobes lobes together (the scene loader checks).
-CANDELA_HD inline Material make_mix(std::span<const Material> parts) {
-    Material m;
+inline Material make_mix(std::span<const Material> parts) {
+    std::array<LobeParams, Bsdf::kMaxLobes> all{};
+    size_t n = 0;
     for (const Material& part : parts) {
         for (uint32_t k = 0; k < part.bsdf.lobe_count; ++k) {
-            CANDELA_CHECK(m.bsdf.lobe_count < Bsdf::kMaxLobes);
-            m.bsdf.lobes[m.bsdf.lobe_count++] = part.bsdf.lobes[k];
+            CANDELA_CHECK(n < Bsdf::kMaxLobes);
+            all[n++] = part.params[k];
         }
     }
-    return m;
+    return make_material(std::span<const LobeParams>(all.data(), n));
 }
 
 // The surface colour the `albedo` integrator shows: the sum of the lobes' albedo or tint.

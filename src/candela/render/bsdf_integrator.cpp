@@ -21,7 +21,7 @@ Rgb BsdfIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounter
         L += beta * lights_.emitted(hit->shape_id, hit->ng, -ray.d);
         if (bounces == scene_.integrator.max_depth) break;
 
-        PathVertex v(scene_, *hit, ray);
+        PathVertex v(scene_, accel_, *hit, ray);
         std::optional<BsdfSample> bs = continue_path(v, bsdf_numbers, beta, ray);
         if (!bs) break;
         if (bs->is_transmission) eta_scale *= sqr(bs->eta);

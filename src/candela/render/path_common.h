@@ -5,6 +5,7 @@
 #include "candela/geometry/ray_offset.h"
 #include "candela/lights/light_set.h"
 #include "candela/materials/bsdf.h"
+#include "candela/materials/material.h"
 #include "candela/math/frame.h"
 #include "candela/render/ray_counters.h"
 #include "candela/render/render_settings.h"
@@ -14,17 +15,26 @@
 namespace candela {
 
 // A hit seen from the ray that found it: its BSDF in the shading frame and the outgoing direction.
+// An untextured material's BSDF is read in place; a textured one is built here from the texture
+// values at the hit (materials/material.h), which needs the hit's surface coordinates.
 struct PathVertex {
     const SurfaceHit& hit;
+    std::optional<Bsdf> textured_bsdf;  // engaged only for textured materials
     const Bsdf& bsdf;
     Frame frame;  // z = shading normal, on the shape's front side
     Vec3f wo;     // towards where the path came from, local
 
-    PathVertex(const Scene& scene, const SurfaceHit& h, const Ray& ray)
+    PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray)
         : hit(h),
-          bsdf(scene.materials[scene.shapes[h.shape_id].material].bsdf),
+          bsdf(material_bsdf(scene, accel, scene.materials[scene.shapes[h.shape_id].material])),
           frame(Frame::from_normal(h.ns)),
           wo(frame.to_local(-ray.d)) {}
+
+  private:
+    const Bsdf& material_bsdf(const Scene& scene, const Accelerator& accel, const Material& m) {
+        if (!m.textured) return m.bsdf;
+        return textured_bsdf.emplace(build_bsdf(m, scene.textures, TextureContext{accel.uv(hit), hit.p}));
+    }
 };
 
 // Veach's power heuristic with beta = 2 (one sample from each strategy).

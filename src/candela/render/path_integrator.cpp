@@ -42,7 +42,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounter
         }
         if (bounces == scene_.integrator.max_depth) break;
 
-        PathVertex v(scene_, *hit, ray);
+        PathVertex v(scene_, accel_, *hit, ray);
         L += beta * sample_direct_light(v, lights_, accel_, scene_.integrator.mis, light_numbers, counters);
 
         std::optional<BsdfSample> bs = continue_path(v, bsdf_numbers, beta, ray);

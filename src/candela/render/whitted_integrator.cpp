@@ -20,7 +20,7 @@ Rgb WhittedIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCoun
         L += beta * lights_.emitted(hit->shape_id, hit->ng, -ray.d);
         if (bounces == scene_.integrator.max_depth) break;
 
-        PathVertex v(scene_, *hit, ray);
+        PathVertex v(scene_, accel_, *hit, ray);
         L += beta * sample_direct_light(v, lights_, accel_, /*mis=*/false, light_numbers, counters);
 
         // Only delta lobes continue the path; a non-delta choice ends it (its light is counted).

@@ -18,6 +18,7 @@
 #include "candela/math/rgb.h"
 #include "candela/math/transform.h"
 #include "candela/render/render_settings.h"
+#include "candela/textures/texture_set.h"
 
 namespace candela {
 
@@ -37,6 +38,7 @@ struct Scene {
     CameraSettings camera;
     FilmSettings film;
 
+    TextureSet textures;  // what textured material parameters index
     std::vector<Material> materials;
     std::vector<std::string> material_names;  // parallel to materials
     std::vector<TriangleMesh> meshes;

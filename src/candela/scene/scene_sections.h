@@ -20,6 +20,11 @@ Transform read_transform(const JsonCursor& steps);
 // `materials`: name -> material, in file order.
 void read_materials(JsonCursor materials, Scene& scene);
 
+// A colour parameter of a material: a constant (one number or [r, g, b], each within `bounds`).
+ColorParam read_color_param(const JsonCursor& c, Scene& scene, const Bounds& bounds);
+// A number parameter of a material: a constant within `bounds`.
+FloatParam read_float_param(const JsonCursor& c, Scene& scene, const Bounds& bounds);
+
 // `shapes`: meshes (loaded relative to `folder`, each charged to `budget` before it is built),
 // quads and spheres; needs the materials.
 void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene,

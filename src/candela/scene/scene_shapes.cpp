@@ -1,4 +1,4 @@
-// The `materials` and `shapes` parts of a scene file.
+// The `shapes` part of a scene file.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -16,68 +16,11 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 5> kMaterialTypes = {"diffuse", "mirror", "dielectric",
-                                                          "transmission", "mix"};
-// The types a `mix` may combine: every material type but `mix` itself.
-constexpr std::array<std::string_view, 4> kLobeMaterialTypes = {"diffuse", "mirror", "dielectric",
-                                                              "transmission"};
-constexpr std::array<std::string_view, 2> kFresnelNames = {"exact", "schlick"};
 constexpr std::array<std::string_view, 3> kShapeTypes = {"mesh", "sphere", "quad"};
-// Reflectances above 1 would create energy; negative ones are meaningless.
-constexpr Bounds kReflectance = Bounds::closed(0, 1);
 // |sin| of the angle between a quad's edges below which it has no usable area or normal.
 constexpr double kParallelSine = 1e-6;
 
 std::string format_vec(const Vec3f& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
-
-// A material of one of kLobeMaterialTypes, whose `type` (already read) is `type`.
-Material read_single_material(JsonCursor& c, std::string_view type) {
-    if (type == "diffuse") {
-        Rgb albedo(0.5f);
-        if (auto v = c.get("albedo")) albedo = v->colour(kReflectance);
-        return make_diffuse(albedo);
-    }
-    if (type == "mirror") {
-        Rgb albedo(1.0f);
-        if (auto v = c.get("albedo")) albedo = v->colour(kReflectance);
-        return make_mirror(albedo);
-    }
-    float ior = 1.5f;
-    Rgb tint(1.0f);
-    if (auto v = c.get("ior")) ior = v->number_f(Bounds::above(0));
-    if (auto v = c.get("tint")) tint = v->colour(kReflectance);
-    if (type == "transmission") return make_transmission(ior, tint);
-    bool schlick = false;
-    if (auto v = c.get("fresnel")) schlick = v->choice("fresnel", kFresnelNames) == "schlick";
-    return make_dielectric(ior, tint, schlick);
-}
-
-// `mix`: 1 to Bsdf::kMaxLobes materials of the other types, their lobes in one material. Mixes do
-// not nest, so each part is one lobe and the count bounds the lobes.
-Material read_mix(JsonCursor& c) {
-    JsonCursor lobes = c.require("lobes");
-    std::vector<JsonCursor> parts = lobes.elements();
-    if (parts.empty() || parts.size() > Bsdf::kMaxLobes)
-        lobes.fail_expected(fmt::format("an array of 1 to {} materials", Bsdf::kMaxLobes));
-    std::vector<Material> materials;
-    for (JsonCursor& part : parts) {
-        JsonCursor type_cursor = part.require("type");
-        if (type_cursor.is_string() && type_cursor.string() == "mix")
-            type_cursor.fail(fmt::format("a mix cannot contain a mix; expected one of: {}",
-                                         names_list(kLobeMaterialTypes)));
-        std::string_view type = type_cursor.choice("material type", kLobeMaterialTypes);
-        materials.push_back(read_single_material(part, type));
-        part.reject_unknown_keys();
-    }
-    return make_mix(materials);
-}
-
-Material read_material(JsonCursor c) {
-    std::string_view type = c.require("type").choice("material type", kMaterialTypes);
-    Material material = type == "mix" ? read_mix(c) : read_single_material(c, type);
-    c.reject_unknown_keys();
-    return material;
-}
 
 uint32_t material_index(const JsonCursor& c, const Scene& scene) {
     std::string name = c.string();
@@ -229,13 +172,6 @@ void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene,
 }
 
 }  // namespace
-
-void read_materials(JsonCursor materials, Scene& scene) {
-    for (auto& [name, c] : materials.members()) {
-        scene.materials.push_back(read_material(c));
-        scene.material_names.push_back(name);
-    }
-}
 
 void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene,
                  MemoryBudget& budget) {

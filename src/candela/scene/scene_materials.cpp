@@ -1,0 +1,83 @@
+// The `materials` part of a scene file: each material's lobes as LobeParams (materials/
+// lobe_params.h), whose colours and numbers may be textures (scene_textures.cpp).
+#include <fmt/format.h>
+
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "candela/scene/enum_names.h"
+#include "candela/scene/scene_sections.h"
+
+namespace candela {
+
+namespace {
+
+constexpr std::array<std::string_view, 5> kMaterialTypes = {"diffuse", "mirror", "dielectric",
+                                                          "transmission", "mix"};
+// The types a `mix` may combine: every material type but `mix` itself.
+constexpr std::array<std::string_view, 4> kLobeMaterialTypes = {"diffuse", "mirror", "dielectric",
+                                                              "transmission"};
+constexpr std::array<std::string_view, 2> kFresnelNames = {"exact", "schlick"};
+// Reflectances above 1 would create energy; negative ones are meaningless.
+constexpr Bounds kReflectance = Bounds::closed(0, 1);
+
+// The lobe of a material of one of kLobeMaterialTypes, whose `type` (already read) is `type`.
+LobeParams read_lobe(JsonCursor& c, std::string_view type, Scene& scene) {
+    if (type == "diffuse") {
+        DiffuseParams p;
+        if (auto v = c.get("albedo")) p.albedo = read_color_param(*v, scene, kReflectance);
+        return p;
+    }
+    if (type == "mirror") {
+        MirrorParams p;
+        if (auto v = c.get("albedo")) p.albedo = read_color_param(*v, scene, kReflectance);
+        return p;
+    }
+    float ior = 1.5f;
+    ColorParam tint{Color(1.0f)};
+    if (auto v = c.get("ior")) ior = v->number_f(Bounds::above(0));
+    if (auto v = c.get("tint")) tint = read_color_param(*v, scene, kReflectance);
+    if (type == "transmission") return TransmissionParams{ior, tint};
+    bool schlick = false;
+    if (auto v = c.get("fresnel")) schlick = v->choice("fresnel", kFresnelNames) == "schlick";
+    return DielectricParams{ior, tint, schlick};
+}
+
+// `mix`: 1 to Bsdf::kMaxLobes materials of the other types, their lobes in one material. Mixes do
+// not nest, so each part is one lobe and the count bounds the lobes.
+Material read_mix(JsonCursor& c, Scene& scene) {
+    JsonCursor lobes = c.require("lobes");
+    std::vector<JsonCursor> parts = lobes.elements();
+    if (parts.empty() || parts.size() > Bsdf::kMaxLobes)
+        lobes.fail_expected(fmt::format("an array of 1 to {} materials", Bsdf::kMaxLobes));
+    std::vector<LobeParams> params;
+    for (JsonCursor& part : parts) {
+        JsonCursor type_cursor = part.require("type");
+        if (type_cursor.is_string() && type_cursor.string() == "mix")
+            type_cursor.fail(fmt::format("a mix cannot contain a mix; expected one of: {}",
+                                         names_list(kLobeMaterialTypes)));
+        std::string_view type = type_cursor.choice("material type", kLobeMaterialTypes);
+        params.push_back(read_lobe(part, type, scene));
+        part.reject_unknown_keys();
+    }
+    return make_material(params);
+}
+
+Material read_material(JsonCursor c, Scene& scene) {
+    std::string_view type = c.require("type").choice("material type", kMaterialTypes);
+    Material material = type == "mix" ? read_mix(c, scene) : make_material(read_lobe(c, type, scene));
+    c.reject_unknown_keys();
+    return material;
+}
+
+}  // namespace
+
+void read_materials(JsonCursor materials, Scene& scene) {
+    for (auto& [name, c] : materials.members()) {
+        scene.materials.push_back(read_material(c, scene));
+        scene.material_names.push_back(name);
+    }
+}
+
+}  // namespace candela
