@@ -1,6 +1,7 @@
 #pragma once
 // The file formats behind image_io.h, one per file, and the checks they share. Internal to
-// image/: the rest of candela calls read_image and write_image, which pick one by extension.
+// image/: the rest of candela calls read_image and write_image, which pick one by extension
+// (textures/texture_file.cpp, which reads 8- and 16-bit files its own way, shares the checks).
 // Readers throw SceneError naming the file; writers replace the file atomically
 // (core/atomic_file.h) and may assume the image is non-empty and finite (write_image checks).
 #include <cstdint>

@@ -41,5 +41,10 @@ CANDELA_HD inline float min_component(const Color& c) {
     float m = c.r < c.g ? c.r : c.g;
     return m < c.b ? m : c.b;
 }
+// The mean of the channels, exactly the value of a grey colour (a sum of three equal values
+// divided by 3 may differ from it in the last bit): how a colour is read as one number.
+CANDELA_HD inline float channel_average(const Color& c) {
+    return c.r == c.g && c.g == c.b ? c.r : (c.r + c.g + c.b) / 3.0f;
+}
 
 }  // namespace candela

@@ -26,7 +26,10 @@ Rgb AlbedoIntegrator::radiance(const Ray& ray, Sampler&, RayCounters& counters) 
     ++counters.camera;
     auto hit = accel_.intersect(ray);
     if (!hit) return Rgb(0.0f);
-    return material_albedo(scene_.materials[scene_.shapes[hit->shape_id].material]);
+    const Material& m = scene_.materials[scene_.shapes[hit->shape_id].material];
+    // A textured material shows its textures at the hit, as it shades there.
+    if (m.textured) return build_bsdf(m, scene_.textures, TextureContext{accel_.uv(*hit), hit->p}).albedo();
+    return material_albedo(m);
 }
 
 Rgb AoIntegrator::radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const {

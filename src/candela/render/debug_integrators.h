@@ -27,7 +27,7 @@ class DepthIntegrator final : public Integrator {
     float near_;  // camera rays start this far from the camera
 };
 
-// The first hit's material colour (material_albedo).
+// The first hit's material colour (material_albedo; a textured material's at the hit).
 class AlbedoIntegrator final : public Integrator {
   public:
     AlbedoIntegrator(const Scene& scene, const Accelerator& accel) : scene_(scene), accel_(accel) {}

@@ -110,6 +110,20 @@ uint64_t environment_memory_bytes(int width, int height) {
     return times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))), kEnvironmentBytesPerTexel);
 }
 
+uint64_t texture_memory_bytes(int width, int height, int channels, int bytes_per_channel) {
+    const uint64_t texels = times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0)));
+    const uint64_t per_texel = uint64_t(std::max(channels, 0)) * uint64_t(std::max(bytes_per_channel, 0));
+    return plus(times(texels, per_texel), sizeof(TextureImage::byte_values));
+}
+
+uint64_t texture_loading_memory_bytes(uint64_t file_bytes, int width, int height, int channels,
+                                      int bytes_per_channel) {
+    // stb decodes 16-bit files to 2 bytes per value, which are then decoded to floats.
+    const int decoded_bytes = bytes_per_channel == 1 ? 1 : 2;
+    return plus(file_bytes, times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))),
+                                  uint64_t(std::max(channels, 0)) * uint64_t(decoded_bytes)));
+}
+
 uint64_t scene_memory_bytes(const Scene& scene) {
     uint64_t bytes = film_memory_bytes(scene.camera.width, scene.camera.height);
     for (const TriangleMesh& m : scene.meshes)
@@ -118,7 +132,7 @@ uint64_t scene_memory_bytes(const Scene& scene) {
     if (scene.environment)
         bytes = plus(bytes, environment_memory_bytes(scene.environment->radiance.width,
                                                      scene.environment->radiance.height));
-    return bytes;
+    return plus(bytes, scene.textures.image_memory_bytes());
 }
 
 std::string format_bytes(uint64_t bytes) {
@@ -159,9 +173,12 @@ std::optional<std::string> memory_refusal(const Scene& scene, const MemoryLimit&
     for (const TriangleMesh& m : scene.meshes) triangles += m.triangle_count();
     MemoryBudget budget(limit);
     return budget.charge(scene_memory_bytes(scene),
-                         fmt::format("the scene at {}x{} pixels ({} triangles{})", scene.camera.width,
+                         fmt::format("the scene at {}x{} pixels ({} triangles{}{})", scene.camera.width,
                                      scene.camera.height, triangles,
-                                     scene.environment ? ", an environment map" : ""));
+                                     scene.environment ? ", an environment map" : "",
+                                     scene.texture_files.empty()
+                                         ? std::string()
+                                         : fmt::format(", {} texture images", scene.texture_files.size())));
 }
 
 std::optional<std::string> MemoryBudget::charge(uint64_t bytes, std::string_view what, uint64_t transient) {

@@ -33,7 +33,14 @@ uint64_t mesh_memory_bytes(uint64_t vertices, uint64_t triangles, bool normals, 
 uint64_t mesh_loading_memory_bytes(uint64_t vertices, uint64_t corners);
 // An environment map of width x height texels: the image, the light's copy and its sampling tables.
 uint64_t environment_memory_bytes(int width, int height);
-// A loaded scene at its camera resolution: film, meshes and environment.
+// A texture image of width x height texels, `channels` values each of `bytes_per_channel` bytes
+// (1 for 8-bit files, kept as bytes; 4 for floats), with its decoding table.
+uint64_t texture_memory_bytes(int width, int height, int channels, int bytes_per_channel);
+// What reading such an image needs besides its texels, freed after: the file's bytes and the
+// decoder's own copy of the texels (at their bit depth in the file: 1 or 2 bytes).
+uint64_t texture_loading_memory_bytes(uint64_t file_bytes, int width, int height, int channels,
+                                      int bytes_per_channel);
+// A loaded scene at its camera resolution: film, meshes, environment and texture images.
 uint64_t scene_memory_bytes(const Scene& scene);
 
 // "512 B", "1.5 KiB", "23.4 GiB".

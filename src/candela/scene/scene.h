@@ -18,6 +18,7 @@
 #include "candela/math/rgb.h"
 #include "candela/math/transform.h"
 #include "candela/render/render_settings.h"
+#include "candela/textures/texture_file.h"
 #include "candela/textures/texture_set.h"
 
 namespace candela {
@@ -30,6 +31,16 @@ struct EnvironmentSettings {
     EnvironmentSampling sampling = EnvironmentSampling::kImportance;
 };
 
+// An image file that textures read, loaded once however many textures name it (the loader
+// matches files by canonical path and colorspace).
+struct TextureFile {
+    std::filesystem::path path;       // the file, relative to the working folder or absolute
+    std::filesystem::path canonical;  // what identifies it
+    TextureColorspace colorspace = TextureColorspace::kSrgb;  // kLinear for float formats
+    std::string name;                 // as the scene file writes it, for messages
+    std::string pointer;              // the JSON pointer of the first `file` key naming it
+};
+
 struct Scene {
     std::filesystem::path file;  // the scene file, as given
 
@@ -39,6 +50,8 @@ struct Scene {
     FilmSettings film;
 
     TextureSet textures;  // what textured material parameters index
+    std::vector<std::string> texture_names;  // parallel to textures: the name, "" when inline
+    std::vector<TextureFile> texture_files;  // parallel to textures' images
     std::vector<Material> materials;
     std::vector<std::string> material_names;  // parallel to materials
     std::vector<TriangleMesh> meshes;

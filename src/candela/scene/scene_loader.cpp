@@ -18,8 +18,8 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 7> kSections = {"integrator", "sampler", "camera", "film",
-                                                       "materials",  "shapes",  "lights"};
+constexpr std::array<std::string_view, 8> kSections = {"integrator", "sampler",   "camera", "film",
+                                                       "textures",   "materials", "shapes", "lights"};
 constexpr std::array<std::string_view, 1> kCameraTypes = {"perspective"};
 constexpr int kMaxResolution = 32768;
 constexpr int kMaxSpp = 1 << 24;
@@ -207,9 +207,11 @@ Scene load_scene_from_string(std::string_view json, const std::filesystem::path&
     if (camera) read_camera(*camera, scene.camera, budget);
     if (budget.used() == 0) check_film_memory(scene.camera, camera ? *camera : root, budget);
     if (auto c = root.get("film")) read_film(*c, scene.film);
+    if (auto c = root.get("textures")) read_textures(*c, scene);
     if (auto c = root.get("materials")) read_materials(*c, scene);
     if (auto c = root.get("shapes")) read_shapes(*c, folder, scene, budget);
     if (auto c = root.get("lights")) read_lights(*c, folder, scene, budget);
+    load_texture_images(scene, document, budget);
     warn_if_unlit(scene);
     return scene;
 }

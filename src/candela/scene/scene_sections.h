@@ -17,12 +17,25 @@ namespace candela {
 // applied first.
 Transform read_transform(const JsonCursor& steps);
 
+// `textures`: name -> texture, read before the materials that name them. A texture may name
+// textures defined after it (but not itself, through any chain). The image files are read later,
+// by load_texture_images.
+void read_textures(JsonCursor textures, Scene& scene);
+
+// Reads the image files scene.texture_files lists (each once) into scene.textures, charging
+// each to `budget` before its texels are allocated. Errors are located at the `file` key that
+// first names the file.
+void load_texture_images(Scene& scene, const JsonDocument& document, MemoryBudget& budget);
+
 // `materials`: name -> material, in file order.
 void read_materials(JsonCursor materials, Scene& scene);
 
-// A colour parameter of a material: a constant (one number or [r, g, b], each within `bounds`).
+// A colour parameter of a material: a constant (one number or [r, g, b], each within `bounds`),
+// `{"texture": NAME}` naming one of the `textures`, or a texture object written in place. A
+// texture's value is clamped to `bounds` where it is looked up (texture_param.h).
 ColorParam read_color_param(const JsonCursor& c, Scene& scene, const Bounds& bounds);
-// A number parameter of a material: a constant within `bounds`.
+// A number parameter of a material: a constant within `bounds`, or a texture as above, read as
+// a number (textures/texture_kinds.h).
 FloatParam read_float_param(const JsonCursor& c, Scene& scene, const Bounds& bounds);
 
 // `shapes`: meshes (loaded relative to `folder`, each charged to `budget` before it is built),
@@ -45,15 +58,19 @@ std::filesystem::path referenced_file(const JsonCursor& file, const std::filesys
 // Runs `load` (load_mesh, read_image). A SceneError it throws keeps its own location (the mesh or
 // image file, with line where known) and gains " (referenced by /pointer at scene:line:col)".
 template <class Load>
-auto load_referenced(const JsonCursor& file, Load&& load) {
+auto load_referenced(const JsonDocument& document, const std::string& pointer, Load&& load) {
     try {
         return std::forward<Load>(load)();
     } catch (const SceneError& e) {
-        SourceLocation at = file.document().locate(file.pointer());
+        SourceLocation at = document.locate(pointer);
         throw SceneError(e.where(), e.message() + " (referenced by " + at.json_pointer + " at " +
                                         at.file + ":" + std::to_string(at.line) + ":" +
                                         std::to_string(at.column) + ")");
     }
+}
+template <class Load>
+auto load_referenced(const JsonCursor& file, Load&& load) {
+    return load_referenced(file.document(), file.pointer(), std::forward<Load>(load));
 }
 
 }  // namespace candela

@@ -1,23 +1,107 @@
 #pragma once
-// The scene's textures, referenced by index from material parameters (texture_param.h).
+// The scene's textures, referenced by index from material parameters (texture_param.h), and the
+// images they read. A texture's inputs always have smaller indices than the texture itself (the
+// loader adds them first), so the textures form a DAG, and its nesting depth is bounded
+// (kMaxTextureDepth) so that evaluation's recursion is too.
+#include <algorithm>
+#include <cstdint>
 #include <vector>
 
+#include "candela/core/check.h"
 #include "candela/core/platform.h"
+#include "candela/core/variant.h"
 #include "candela/textures/texture_context.h"
+#include "candela/textures/texture_image.h"
+#include "candela/textures/texture_kinds.h"
 #include "candela/textures/texture_param.h"
 
 namespace candela {
 
+using Texture = Variant<ConstantTexture, ImageTexture, CheckerboardTexture, ScaleTexture, MixTexture>;
+
+// The most textures a chain of inputs may hold (a texture with no inputs has depth 1).
+inline constexpr int kMaxTextureDepth = 16;
+
 class TextureSet {
   public:
-    CANDELA_HD bool empty() const { return count_ == 0; }
+    CANDELA_HD bool empty() const { return textures_.empty(); }
+    CANDELA_HD size_t size() const { return textures_.size(); }
+    CANDELA_HD size_t image_count() const { return images_.size(); }
 
-    // The parameter's value at ctx: its constant, or its texture's value there.
-    CANDELA_HD float eval(const FloatParam& p, const TextureContext&) const { return p.value; }
-    CANDELA_HD Color eval(const ColorParam& p, const TextureContext&) const { return p.value; }
+    // The parameter's value at ctx: its constant, or its texture's value there clamped to the
+    // parameter's range. A texture index this set does not hold gives the constant (make_material
+    // builds a textured material's load-time BSDF with an empty set).
+    CANDELA_HD float eval(const FloatParam& p, const TextureContext& ctx) const {
+        if (!holds(p.texture)) return p.value;
+        const float v = number(p.texture, ctx);
+        return v < p.lo ? p.lo : (v > p.hi ? p.hi : v);
+    }
+    CANDELA_HD Color eval(const ColorParam& p, const TextureContext& ctx) const {
+        if (!holds(p.texture)) return p.value;
+        return clamp_channels(color(p.texture, ctx), p.lo, p.hi);
+    }
+    // A colour parameter read as a number (a texture input that gives a number: `mix` of numbers).
+    CANDELA_HD float number(const ColorParam& p, const TextureContext& ctx) const {
+        if (!holds(p.texture)) return channel_average(p.value);
+        const float v = number(p.texture, ctx);
+        return v < p.lo ? p.lo : (v > p.hi ? p.hi : v);
+    }
+
+    // Texture i's colour and number at ctx.
+    CANDELA_HD Color color(uint32_t i, const TextureContext& ctx) const {
+        return visit([&](const auto& t) { return t.color(*this, ctx); }, textures_[i]);
+    }
+    CANDELA_HD float number(uint32_t i, const TextureContext& ctx) const {
+        return visit([&](const auto& t) { return t.number(*this, ctx); }, textures_[i]);
+    }
+
+    CANDELA_HD const Texture& texture(uint32_t i) const { return textures_[i]; }
+    CANDELA_HD const TextureImage& image(uint32_t i) const { return images_[i]; }
+    // Texture i's nesting depth: 1 plus the largest depth of its inputs.
+    int depth(uint32_t i) const { return depths_[i]; }
+
+    // --- building (the scene loader)
+    // Adds `t`, whose inputs must already be in the set; returns its index.
+    uint32_t add(const Texture& t) {
+        int d = 0;
+        visit([&](const auto& kind) {
+            kind.for_each_input([&](uint32_t input) {
+                CANDELA_CHECK(input < textures_.size());
+                d = std::max(d, depths_[input]);
+            });
+        }, t);
+        textures_.push_back(t);
+        depths_.push_back(d + 1);
+        return uint32_t(textures_.size() - 1);
+    }
+    // Adds an image for ImageTexture::image to index; returns its index.
+    uint32_t add_image(TextureImage image) {
+        images_.push_back(std::move(image));
+        return uint32_t(images_.size() - 1);
+    }
+    // Replaces image i (the loader reserves indices while reading the scene file and reads the
+    // files afterwards).
+    void set_image(uint32_t i, TextureImage image) { images_[i] = std::move(image); }
+
+    // The bytes the images' texels take.
+    uint64_t image_memory_bytes() const {
+        uint64_t bytes = 0;
+        for (const TextureImage& image : images_) bytes += image.memory_bytes();
+        return bytes;
+    }
 
   private:
-    size_t count_ = 0;
+    CANDELA_HD bool holds(uint32_t i) const { return i < textures_.size(); }
+
+    std::vector<Texture> textures_;
+    std::vector<int> depths_;  // parallel to textures_
+    std::vector<TextureImage> images_;
 };
+
+static_assert(TextureKind<ConstantTexture, TextureSet>);
+static_assert(TextureKind<ImageTexture, TextureSet>);
+static_assert(TextureKind<CheckerboardTexture, TextureSet>);
+static_assert(TextureKind<ScaleTexture, TextureSet>);
+static_assert(TextureKind<MixTexture, TextureSet>);
 
 }  // namespace candela

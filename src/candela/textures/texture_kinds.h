@@ -1,0 +1,151 @@
+#pragma once
+// The kinds of texture, as values: each gives a colour and a number at a shading point. A texture
+// used for a colour parameter is evaluated with color(), for a number parameter with number()
+// (pbrt-v4 has a Float and a Spectrum version of each texture; here one value serves both).
+//
+// A texture's inputs are parameters (texture_param.h): constants, or other textures of the same
+// TextureSet by index, so textures nest. Each kind is a template over the set that holds it, so
+// it can evaluate its inputs without this header depending on texture_set.h.
+#include <concepts>
+#include <cstdint>
+
+#include "candela/math/color.h"
+#include "candela/textures/texture_context.h"
+#include "candela/textures/texture_image.h"
+#include "candela/textures/texture_param.h"
+#include "candela/textures/uv_transform.h"
+
+namespace candela {
+
+template <class T, class Set>
+concept TextureKind = requires(const T& t, const Set& set, const TextureContext& ctx) {
+    // The value as a colour and as a number at ctx.
+    { t.color(set, ctx) } -> std::same_as<Color>;
+    { t.number(set, ctx) } -> std::same_as<float>;
+    // The textures it reads (indices into the set), each passed to f; for the loader's checks.
+    t.for_each_input([](uint32_t) {});
+};
+
+// `constant`: one value everywhere; read as a number, the average of its channels.
+struct ConstantTexture {
+    Color value;
+
+    template <class Set>
+    CANDELA_HD Color color(const Set&, const TextureContext&) const { return value; }
+    template <class Set>
+    CANDELA_HD float number(const Set&, const TextureContext&) const { return channel_average(value); }
+    template <class F>
+    void for_each_input(F&&) const {}
+};
+
+// `image`: an image of the set (texture_image.h) at the transformed uv, times `scale`, inverted
+// to 1 - value when `invert` (pbrt-v4's imagemap: a colour is then clamped at 0, a number
+// inverted to max(0, 1 - value)). As a number it reads one channel or the average
+// (TextureImage::number).
+struct ImageTexture {
+    uint32_t image = 0;  // index into the set's images
+    UvTransform uv;
+    TextureWrap wrap = TextureWrap::kRepeat;
+    TextureFilter filter = TextureFilter::kBilinear;
+    float scale = 1.0f;
+    bool invert = false;
+
+    template <class Set>
+    CANDELA_HD Color color(const Set& set, const TextureContext& ctx) const {
+        Rgb v = set.image(image).lookup(uv.apply(ctx.uv), wrap, filter).rgb * scale;
+        if (invert) v = Rgb(1.0f) - v;
+        // The image holds RGB; in spectral mode this is where it becomes the colour type.
+        return clamp_channels(Color(v), 0.0f, kUnbounded);
+    }
+    template <class Set>
+    CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
+        const TextureImage& img = set.image(image);
+        const float v = img.number(img.lookup(uv.apply(ctx.uv), wrap, filter)) * scale;
+        return invert ? (v < 1.0f ? 1.0f - v : 0.0f) : v;
+    }
+    template <class F>
+    void for_each_input(F&&) const {}
+};
+
+// `checkerboard`: color0 where floor(s) + floor(t) is even, color1 where it is odd, (s, t) the
+// transformed uv (pbrt-v4's checkerboard without its antialiasing filter; color0 and color1 are
+// its tex1 and tex2). Each colour may itself be a texture, evaluated only where it shows.
+struct CheckerboardTexture {
+    ColorParam color0{Color(1.0f)};
+    ColorParam color1{Color(0.0f)};
+    UvTransform uv;
+
+    // Whether (s, t) lies on a color1 square. In float: every float beyond 2^24 is an even
+    // integer, so the parity of the sum stays defined however far out the point is.
+    CANDELA_HD bool odd(const TextureContext& ctx) const {
+        const Vec2f st = uv.apply(ctx.uv);
+        return std::fmod(std::floor(st.x) + std::floor(st.y), 2.0f) != 0.0f;
+    }
+
+    template <class Set>
+    CANDELA_HD Color color(const Set& set, const TextureContext& ctx) const {
+        return set.eval(odd(ctx) ? color1 : color0, ctx);
+    }
+    template <class Set>
+    CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
+        return set.number(odd(ctx) ? color1 : color0, ctx);
+    }
+    template <class F>
+    void for_each_input(F&& f) const {
+        if (color0.is_textured()) f(color0.texture);
+        if (color1.is_textured()) f(color1.texture);
+    }
+};
+
+// `scale`: `tex` times the number `scale` (pbrt-v4's scale texture).
+struct ScaleTexture {
+    ColorParam tex{Color(1.0f)};
+    FloatParam scale{1.0f};
+
+    template <class Set>
+    CANDELA_HD Color color(const Set& set, const TextureContext& ctx) const {
+        return set.eval(tex, ctx) * set.eval(scale, ctx);
+    }
+    template <class Set>
+    CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
+        return set.number(tex, ctx) * set.eval(scale, ctx);
+    }
+    template <class F>
+    void for_each_input(F&& f) const {
+        if (tex.is_textured()) f(tex.texture);
+        if (scale.is_textured()) f(scale.texture);
+    }
+};
+
+// `mix`: (1 - amount) tex1 + amount tex2, the number `amount` in [0, 1] (pbrt-v4's mix; as
+// there, an input whose weight is 0 is not evaluated).
+struct MixTexture {
+    ColorParam tex1{Color(0.0f)};
+    ColorParam tex2{Color(1.0f)};
+    FloatParam amount{0.5f, kNoTexture, 0.0f, 1.0f};
+
+    template <class Set>
+    CANDELA_HD Color color(const Set& set, const TextureContext& ctx) const {
+        const float a = set.eval(amount, ctx);
+        Color c(0.0f);
+        if (a != 1.0f) c += set.eval(tex1, ctx) * (1.0f - a);
+        if (a != 0.0f) c += set.eval(tex2, ctx) * a;
+        return c;
+    }
+    template <class Set>
+    CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
+        const float a = set.eval(amount, ctx);
+        float v = 0.0f;
+        if (a != 1.0f) v += set.number(tex1, ctx) * (1.0f - a);
+        if (a != 0.0f) v += set.number(tex2, ctx) * a;
+        return v;
+    }
+    template <class F>
+    void for_each_input(F&& f) const {
+        if (tex1.is_textured()) f(tex1.texture);
+        if (tex2.is_textured()) f(tex2.texture);
+        if (amount.is_textured()) f(amount.texture);
+    }
+};
+
+}  // namespace candela
