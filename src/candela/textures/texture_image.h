@@ -52,7 +52,7 @@ struct TextureImage {
         const size_t i = (size_t(y) * size_t(width) + size_t(x)) * size_t(channels);
         if (!bytes.empty())
             return unpack(bytes.data() + i, [this](uint8_t v) { return byte_values[v]; },
-                          [](uint8_t v) { return float(v) * (1.0f / 255.0f); });
+                          [](uint8_t v) { return float(v) / 255.0f; });
         auto same = [](float v) { return v; };
         return unpack(floats.data() + i, same, same);
     }
@@ -65,7 +65,8 @@ struct TextureImage {
 
     // The image at texture coordinates st ((0, 0) the bottom-left corner, (1, 1) the top-right).
     CANDELA_HD RgbAlpha lookup(Vec2f st, TextureWrap wrap, TextureFilter filter) const {
-        const float x = st.x * float(width), y = (1.0f - st.y) * float(height);
+        const float x = finite_coordinate(st.x * float(width));
+        const float y = finite_coordinate((1.0f - st.y) * float(height));
         if (filter == TextureFilter::kPoint) return fetch(floor_to_int(x), floor_to_int(y), wrap);
         // Bilinear between the centres around (x, y), in units where texel i's centre is i.
         const float xc = x - 0.5f, yc = y - 0.5f;
@@ -116,15 +117,16 @@ struct TextureImage {
         return true;
     }
 
-    // floor(v) as an int, saturated to +-2^30 (NaN to the low end): uv may be anything a mesh
-    // file holds, and a float-to-int conversion out of range is undefined. Far beyond the image,
-    // repeat and clamp land on some texel either way.
-    CANDELA_HD static int floor_to_int(float v) {
-        constexpr float kLimit = 1073741824.0f;  // 2^30
-        v = std::floor(v);
-        if (!(v >= -kLimit)) return -int(kLimit);
-        return v > kLimit ? int(kLimit) : int(v);
+    // v moved into [-2^24, 2^24], NaN to 0: uv may be anything a mesh file holds, and beyond
+    // float range a conversion to int is undefined and bilinear weights are NaN. That far out,
+    // floats are integers anyway: repeat and clamp land on some texel, black is black.
+    CANDELA_HD static float finite_coordinate(float v) {
+        constexpr float kLimit = 16777216.0f;
+        if (v > -kLimit) return v < kLimit ? v : kLimit;
+        return v <= -kLimit ? -kLimit : 0.0f;
     }
+
+    CANDELA_HD static int floor_to_int(float v) { return int(std::floor(v)); }
 };
 
 }  // namespace candela
