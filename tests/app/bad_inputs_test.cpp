@@ -87,7 +87,7 @@ const BadInput kBadInputs[] = {
      "duplicate key \"film\""},
     {"deep_nesting_unclosed.json", kDeepNesting, kError, "", 1, 100001, "",
      "JSON syntax error while parsing value - unexpected end of input"},
-    // --- wrong types and shapes of values (17)
+    // --- wrong types and shapes of values (18)
     {"boolean_for_number.json", kStructure, kError, "", 2, 21, "/camera/fov",
      "expected a number in (0, 180), got true"},
     {"environment_file_and_color.json", kStructure, kError, "", 3, 57, "/lights/0/color",
@@ -114,6 +114,8 @@ const BadInput kBadInputs[] = {
      "expected an array of 3 numbers [x, y, z], got \"0 1 5\""},
     {"transform_step_two_keys.json", kStructure, kError, "", 5, 66, "/shapes/0/transform/0",
      "a transform step has one key; put \"scale\" in a step of its own"},
+    {"texture_cycle.json", kStructure, kError, "", 4, 46, "/textures/b/tex1/texture",
+     "textures form a cycle: \"a\" -> \"b\" -> \"a\""},
     {"two_environments.json", kStructure, kError, "", 4, 5, "/lights/1",
      "a scene has at most one environment light, and /lights/0 is one"},
     {"wrong_type_section.json", kStructure, kError, "", 2, 11, "/film",
@@ -122,7 +124,7 @@ const BadInput kBadInputs[] = {
      "expected an integer in [1, 16777216], got \"16\""},
     {"wrong_vector_length.json", kStructure, kError, "", 2, 26, "/camera/position",
      "expected an array of 3 numbers [x, y, z], got [0, 1]"},
-    // --- unknown keys, types and names (18)
+    // --- unknown keys, types and names (19)
     {"missing_key_near_miss.json", kUnknownName, kError, "", 4, 45, "/shapes/0",
      "unknown key \"radus\" (did you mean \"radius\"?)"},
     {"mix_nested.json", kUnknownName, kError, "", 5, 16, "/materials/coated/lobes/1/type",
@@ -158,7 +160,9 @@ const BadInput kBadInputs[] = {
     {"unknown_shape_type.json", kUnknownName, kError, "", 4, 14, "/shapes/0/type",
      "unknown shape type \"shpere\"; expected one of: mesh, quad, sphere"},
     {"unknown_top_level_key.json", kUnknownName, kError, "", 2, 3, "",
-     "unknown key \"renderer\"; expected one of: camera, film, integrator, lights, materials, sampler, shapes"},
+     "unknown key \"renderer\"; expected one of: camera, film, integrator, lights, materials, sampler, shapes, textures"},
+    {"unknown_texture.json", kUnknownName, kError, "", 3, 64, "/materials/m/albedo/texture",
+     "unknown texture \"wod\"; defined textures: wood"},
     // --- numbers: negative, zero, NaN/Inf, beyond range (30)
     {"albedo_out_of_range.json", kNumber, kError, "", 3, 48, "/materials/red/albedo/1",
      "expected a number in [0, 1], got 1.2"},
@@ -249,7 +253,7 @@ const BadInput kBadInputs[] = {
      "all 2 triangles of mesh file \"emitter_all_degenerate.obj\" have zero area (degenerate)"},
     {"quad_transform_overflows.json", kDegenerate, kError, "", 4, 28, "/shapes/0/transform",
      "the transform leaves the quad with no area in float precision"},
-    // --- referenced files: missing, empty, folders, unreadable, unknown kind (12)
+    // --- referenced files: missing, empty, folders, unreadable, unknown kind (13)
     {"environment_is_folder.json", kFileAccess, kError, "", 2, 46, "/lights/0/file",
      "environment image file \"environment_is_folder.hdr\" is a folder, not a file"},
     {"exr_empty.json", kFileAccess, kError, "exr_empty.exr", 0, 0, "",
@@ -272,6 +276,8 @@ const BadInput kBadInputs[] = {
      "environment image file \"missing_sky.hdr\" not found"},
     {"missing_mesh_file.json", kFileAccess, kError, "", 4, 30, "/shapes/0/file",
      "mesh file \"meshes/missing.obj\" not found"},
+    {"missing_texture_file.json", kFileAccess, kError, "", 2, 47, "/textures/t/file",
+     "texture image file \"missing_texture.png\" not found"},
     {"scene_is_folder.json", kFileAccess, kError, "", 0, 0, "",
      "is a folder, not a scene file"},
     // --- OBJ meshes (11)
@@ -328,7 +334,7 @@ const BadInput kBadInputs[] = {
      "unknown PLY format \"binary_middle_endian\""},
     {"ply_vertex_count_beyond_index.json", kPly, kError, "ply_vertex_count_beyond_index.ply", 3, 0, "",
      "1000000000000 vertices are more than the 2^32 - 1 a mesh can index"},
-    // --- HDR and EXR images (11)
+    // --- HDR, EXR and texture images (12)
     {"environment_not_hdr.json", kImage, kError, "", 3, 37, "/lights/0/file",
      "expected an .hdr or .exr image (linear radiance), got \"sky.png\""},
     {"exr_absurd_size.json", kImage, kError, "exr_absurd_size.exr", 0, 0, "",
@@ -351,6 +357,8 @@ const BadInput kBadInputs[] = {
      "truncated Radiance HDR header"},
     {"hdr_zero_size.json", kImage, kError, "hdr_zero_size.hdr", 0, 0, "",
      "image has zero size (2x0)"},
+    {"texture_corrupt.json", kImage, kError, "texture_corrupt.png", 0, 0, "",
+     "not a PNG, JPEG, TGA or BMP image, or a corrupt one"},
 };
 
 // mesh_unreadable.json's mesh is committed readable (git keeps no permissions); the test reads a

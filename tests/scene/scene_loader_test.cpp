@@ -243,6 +243,10 @@ TEST(SceneLoader, LoadsEverySectionFromAFile) {
     EXPECT_EQ(s.film.filter, FilterType::kTent);
     EXPECT_EQ(s.film.transfer, Transfer::kGamma);
     ASSERT_EQ(s.material_names, (std::vector<std::string>{"white", "mirror", "glass"}));
+    // Inputs first: picture before checks, the inline constant before worn.
+    EXPECT_EQ(s.texture_names, (std::vector<std::string>{"picture", "checks", "", "worn", "dim"}));
+    EXPECT_EQ(s.texture_files.size(), 1u);
+    EXPECT_TRUE(s.materials[1].textured);
     ASSERT_EQ(s.shapes.size(), 3u);
     EXPECT_EQ(s.meshes.size(), 2u);
     EXPECT_EQ(s.spheres.size(), 1u);
