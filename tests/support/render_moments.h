@@ -32,7 +32,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "candela/camera/perspective_camera.h"
+#include "candela/camera/camera.h"
 #include "candela/film/filter.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/image/image.h"
@@ -80,12 +80,12 @@ inline RenderMoments render_moments(const Scene& scene, bool for_variance = true
                          "render_moments_replicated for sobol";
     Accelerator accel(scene.meshes, scene.spheres, scene.shapes);
     LightSet lights = build_light_set(scene, accel);  // as render() builds them
-    PerspectiveCamera camera(scene.camera);
+    const Camera camera = make_camera(scene.camera);
     std::unique_ptr<Integrator> integrator = make_integrator(scene, accel, lights);
 
     RenderMoments m;
-    m.width = camera.width();
-    m.height = camera.height();
+    m.width = scene.camera.width;
+    m.height = scene.camera.height;
     m.spp = uint32_t(scene.sampler.spp);
     m.sum.assign(size_t(m.width) * size_t(m.height), {0.0, 0.0, 0.0});
     m.sum_sq = m.sum;
@@ -107,7 +107,8 @@ inline RenderMoments render_moments(const Scene& scene, bool for_variance = true
                     // are conservative (they lose power, never gain false alarms).
                     Sampler sampler(scene.sampler.type, pixel, i, scene.sampler.seed);
                     Vec2f film = Vec2f(float(x), float(y)) + sample_filter(scene.film.filter, i, sampler.next_vec2f());
-                    Rgb L = integrator->radiance(camera.generate_ray(film), sampler, counters);
+                    const Ray ray = visit([&](const auto& cam) { return cam.generate_ray(film, sampler); }, camera);
+                    Rgb L = integrator->radiance(ray, sampler, counters);
                     if (!L.is_finite()) {
                         ++dropped[t];
                         continue;

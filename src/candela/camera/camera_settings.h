@@ -1,17 +1,33 @@
 #pragma once
-// The camera of the scene file (DESIGN.md: right-handed, vertical fov, image y downward).
+// The camera of the scene file (DESIGN.md: right-handed, image y downward; docs/SCENE_FORMAT.md).
 #include "candela/math/vec.h"
 
 namespace candela {
 
+// perspective: rays from the eye (or, with a lens, through it) spread by the field of view.
+// orthographic: parallel rays along the view direction from a film `ortho_height` tall.
+enum class CameraType { kPerspective, kOrthographic };
+
+// Which extent of the image `fov` spans (Mitsuba 3's fov_axis): its width, its height, its
+// diagonal, or the smaller or larger of width and height (pbrt's fov spans the smaller).
+enum class FovAxis { kX, kY, kDiagonal, kSmaller, kLarger };
+
 struct CameraSettings {
+    CameraType type = CameraType::kPerspective;
     Vec3f position{0, 0, 0};
     Vec3f look_at{0, 0, -1};
     Vec3f up{0, 1, 0};
-    float fov_degrees = 40.0f;  // vertical
+    float fov_degrees = 40.0f;       // perspective: the angle across fov_axis
+    FovAxis fov_axis = FovAxis::kY;  // vertical: the scene format's choice since version 1
+    float ortho_height = 2.0f;       // orthographic: the film's height in scene units
     int width = 512;
     int height = 512;
     float near = 0.0f;  // camera rays start this far along their direction
+    // Thin lens (pbrt's lensradius, focaldistance): the radius of the lens disk in scene units (0:
+    // a pinhole), and the distance from the lens to the plane in focus, along the view direction.
+    // focus_distance 0 stands for the distance from position to look_at.
+    float aperture_radius = 0.0f;
+    float focus_distance = 0.0f;
 };
 
 }  // namespace candela

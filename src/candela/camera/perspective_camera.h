@@ -1,6 +1,8 @@
 #pragma once
 // A pinhole camera. Film positions are in pixels: x grows to the right, y downward, (0, 0) the
 // top-left corner of the image. Right-handed: image right = normalize(cross(forward, up)).
+#include "candela/camera/camera_frame.h"
+#include "candela/camera/camera_model.h"
 #include "candela/camera/camera_settings.h"
 #include "candela/core/platform.h"
 #include "candela/math/ray.h"
@@ -10,27 +12,30 @@ namespace candela {
 class PerspectiveCamera {
   public:
     // The settings must be valid (the scene loader checks them): look_at != position, up not
-    // parallel to the view direction, 0 < fov < 180.
-    explicit PerspectiveCamera(const CameraSettings& settings);
+    // parallel to the view direction, 0 < fov < 180. The lens settings are not read.
+    explicit PerspectiveCamera(const CameraSettings& settings)
+        : frame_(settings), screen_(settings, perspective_half_extents(settings)), near_(settings.near),
+          width_(settings.width), height_(settings.height) {}
 
     // The ray through continuous film position `film` (pixels); unit direction, starting `near`
     // along it.
     CANDELA_HD Ray generate_ray(const Vec2f& film) const {
-        float sx = (2.0f * film.x * inv_width_ - 1.0f) * half_width_;
-        float sy = (1.0f - 2.0f * film.y * inv_height_) * half_height_;
-        Vec3f d = normalize(forward_ + right_ * sx + up_ * sy);
-        return Ray{position_ + d * near_, d, 0.0f, kInfinity};
+        Vec2f s = screen_(film);
+        Vec3f d = normalize(frame_.forward + frame_.right * s.x + frame_.up * s.y);
+        return Ray{frame_.position + d * near_, d, 0.0f, kInfinity};
     }
+    // A pinhole has no lens: the sampler is not asked for anything.
+    CANDELA_HD Ray generate_ray(const Vec2f& film, Sampler&) const { return generate_ray(film); }
 
     int width() const { return width_; }
     int height() const { return height_; }
 
   private:
-    Vec3f position_, forward_, right_, up_;
-    float half_width_, half_height_;  // tangent of the half angles
-    float inv_width_, inv_height_;
+    CameraFrame frame_;
+    FilmToScreen screen_;  // onto the plane at distance 1: tangents of the half angles
     float near_;
     int width_, height_;
 };
+static_assert(CameraModel<PerspectiveCamera>);
 
 }  // namespace candela

@@ -13,7 +13,7 @@
 #include <string>
 #include <utility>
 
-#include "candela/camera/perspective_camera.h"
+#include "candela/camera/camera.h"
 #include "candela/core/error.h"
 #include "candela/film/film.h"
 #include "candela/film/filter.h"
@@ -52,9 +52,9 @@ struct ThreadTally {
     uint64_t dropped = 0;
 };
 
-// What every camera sample reads, shared by the render threads.
+// What every camera sample reads, shared by the render threads (the camera aside: see
+// render_pixels).
 struct SampleContext {
-    const PerspectiveCamera& camera;
     const Integrator& integrator;
     int width;
     uint64_t seed;
@@ -64,12 +64,14 @@ struct SampleContext {
 
 // Camera sample `s` of pixel (x, y), added to the pixel's running sum, or dropped (counted) when
 // it is NaN or Inf. Its random numbers are a pure function of (pixel, s, seed), so the sum is the
-// same whichever thread computes it and however the samples are split into passes.
-void take_sample(const SampleContext& c, int x, int y, uint32_t s, const PixelSampler& pixel_sampler, PixelSum& sum,
-                 ThreadTally& tally) {
+// same whichever thread computes it and however the samples are split into passes. The filter's
+// request comes first, then the camera's lens point if it has a lens (camera_model.h).
+template <CameraModel CameraT>
+void take_sample(const SampleContext& c, const CameraT& camera, int x, int y, uint32_t s,
+                 const PixelSampler& pixel_sampler, PixelSum& sum, ThreadTally& tally) {
     Sampler sampler = pixel_sampler.sample(s);
     Vec2f film_pos = Vec2f(float(x), float(y)) + sample_filter(c.filter, s, sampler.next_vec2f());
-    Rgb L = c.integrator.radiance(c.camera.generate_ray(film_pos), sampler, tally.rays);
+    Rgb L = c.integrator.radiance(camera.generate_ray(film_pos, sampler), sampler, tally.rays);
     if (!L.is_finite()) {
         ++tally.dropped;
         return;
@@ -85,6 +87,21 @@ struct Pass {
     const Film* from = nullptr;
     Film* to = nullptr;
 };
+
+// The pass's samples of one tile's pixels, for one kind of camera: the caller dispatches on the
+// camera once per tile, so the sample loop has no camera branch.
+template <CameraModel CameraT>
+void render_tile(const SampleContext& c, const CameraT& camera, const Tile& tile, const Pass& pass,
+                 ThreadTally& tally) {
+    for (int y = tile.y0; y < tile.y1; ++y) {
+        for (int x = tile.x0; x < tile.x1; ++x) {
+            PixelSum sum = pass.from->sum(x, y);
+            const PixelSampler pixel_sampler(c.sampler_type, uint64_t(y) * uint64_t(c.width) + uint64_t(x), c.seed);
+            for (uint32_t s = pass.begin; s < pass.end; ++s) take_sample(c, camera, x, y, s, pixel_sampler, sum, tally);
+            pass.to->sum(x, y) = sum;
+        }
+    }
+}
 
 }  // namespace
 
@@ -111,15 +128,15 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
     LightSet lights = build_light_set(scene, accel);
     result.stats.build_seconds = seconds_since(build_start);
 
-    PerspectiveCamera camera(scene.camera);
+    const Camera camera = make_camera(scene.camera);
     std::unique_ptr<Integrator> integrator = make_integrator(scene, accel, lights);
-    const int width = camera.width(), height = camera.height();
+    const int width = scene.camera.width, height = scene.camera.height;
     if (start.film.width() != width || start.film.height() != height)
         throw RenderError("render: the start state is " + std::to_string(start.film.width()) + "x" +
                           std::to_string(start.film.height()) + ", the scene " + std::to_string(width) + "x" +
                           std::to_string(height));
     const auto spp = uint32_t(scene.sampler.spp);
-    const SampleContext context{camera, *integrator, width, scene.sampler.seed, scene.sampler.type, scene.film.filter};
+    const SampleContext context{*integrator, width, scene.sampler.seed, scene.sampler.type, scene.film.filter};
     const uint64_t pixels = uint64_t(width) * uint64_t(height);
 
     RenderState& state = result.state;
@@ -159,17 +176,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
                     if (check_stop()) return;
                     const Tile& tile = tiles[t];
                     uint64_t rays_before = tally.rays.total();
-                    for (int y = tile.y0; y < tile.y1; ++y) {
-                        for (int x = tile.x0; x < tile.x1; ++x) {
-                            PixelSum sum = pass.from->sum(x, y);
-                            const PixelSampler pixel_sampler(context.sampler_type,
-                                                       uint64_t(y) * uint64_t(context.width) + uint64_t(x),
-                                                       context.seed);
-                            for (uint32_t s = pass.begin; s < pass.end; ++s)
-                                take_sample(context, x, y, s, pixel_sampler, sum, tally);
-                            pass.to->sum(x, y) = sum;
-                        }
-                    }
+                    visit([&](const auto& cam) { render_tile(context, cam, tile, pass, tally); }, camera);
                     uint64_t tile_pixels = uint64_t(tile.x1 - tile.x0) * uint64_t(tile.y1 - tile.y0);
                     progress.advance(tile_pixels * n, tally.rays.total() - rays_before);
                 }

@@ -4,6 +4,8 @@
 // so a request's position in that order is its dimension:
 //
 //   request 0      2D  pixel filter (film position)
+//   request 1      2D  lens point, only for a camera with a lens (aperture_radius > 0: a property
+//                      of the scene, so every sample of a render asks the same requests)
 //   per bounce     1D  light choice, 2D light point (next-event estimation; the point's x also
 //                      picks a mesh light's triangle, MeshEmitter::sample)
 //                  1D  BSDF lobe choice, 2D BSDF direction

@@ -2,13 +2,16 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <system_error>
 
+#include "candela/camera/camera_frame.h"
 #include "candela/scene/enum_names.h"
 #include "candela/scene/json_cursor.h"
 #include "candela/scene/memory_budget.h"
@@ -20,7 +23,9 @@ namespace {
 
 constexpr std::array<std::string_view, 8> kSections = {"integrator", "sampler",   "camera", "film",
                                                        "textures",   "materials", "shapes", "lights"};
-constexpr std::array<std::string_view, 1> kCameraTypes = {"perspective"};
+// In the order of CameraType and FovAxis (camera_settings.h).
+constexpr std::array<std::string_view, 2> kCameraTypes = {"perspective", "orthographic"};
+constexpr std::array<std::string_view, 5> kFovAxes = {"x", "y", "diagonal", "smaller", "larger"};
 constexpr int kMaxResolution = 32768;
 constexpr int kMaxSpp = 1 << 24;
 // |sin| of the angle between up and the view direction below which the camera frame is undefined.
@@ -86,8 +91,62 @@ void check_camera_frame(const CameraSettings& camera, const JsonCursor& c,
     }
 }
 
+template <class E, size_t N>
+E enum_of(std::string_view name, const std::array<std::string_view, N>& names) {
+    return E(std::find(names.begin(), names.end(), name) - names.begin());
+}
+
+// `key` belongs to the other camera type: say which, rather than calling it unknown.
+[[noreturn]] void fail_other_type_key(const JsonCursor& c, std::string_view key, CameraType type) {
+    const bool perspective = type == CameraType::kPerspective;
+    c.document().fail_at_key(
+        c.pointer(), key,
+        fmt::format("{} is a key of the {} camera; {} camera takes {}", json_quoted(key),
+                    perspective ? "orthographic" : "perspective",
+                    perspective ? "a perspective" : "an orthographic",
+                    perspective ? "\"fov\" (degrees)" : "\"height\" (the image's height in scene units)"));
+}
+
+// The projection: fov and fov_axis for perspective, height for orthographic.
+void read_projection(JsonCursor& c, CameraSettings& camera) {
+    if (camera.type == CameraType::kPerspective) {
+        if (c.has("height")) fail_other_type_key(c, "height", camera.type);
+        if (auto v = c.get("fov")) camera.fov_degrees = v->number_f(Bounds::open(0, 180));
+        if (auto v = c.get("fov_axis")) camera.fov_axis = enum_of<FovAxis>(v->choice("fov axis", kFovAxes), kFovAxes);
+        return;
+    }
+    for (std::string_view key : {"fov", "fov_axis"})
+        if (c.has(key)) fail_other_type_key(c, key, camera.type);
+    camera.ortho_height = c.require("height").number_f(Bounds::above(0));
+}
+
+// A thin lens: aperture_radius (0: none) and focus_distance (default: the distance to look_at).
+void read_lens(JsonCursor& c, CameraSettings& camera) {
+    if (auto v = c.get("aperture_radius")) camera.aperture_radius = v->number_f(Bounds::at_least(0));
+    if (auto v = c.get("focus_distance")) camera.focus_distance = v->number_f(Bounds::above(0));
+}
+
+// Camera rays within float range: the orthographic film's width, and a thin lens's rays towards
+// the corners of the focus plane (whose length normalize() squares).
+void check_camera_extent(const CameraSettings& camera, JsonCursor& c) {
+    const bool orthographic = camera.type == CameraType::kOrthographic;
+    if (orthographic && !std::isfinite(orthographic_half_extents(camera).x + camera.aperture_radius))
+        c.require("height").fail(fmt::format(
+            "the film's width ({} times the aspect ratio, plus the aperture) overflows float range", camera.ortho_height));
+    if (camera.aperture_radius == 0.0f) return;
+    const Vec2f half = orthographic ? Vec2f(0.0f, 0.0f) : perspective_half_extents(camera);
+    const float f = resolved_focus_distance(camera), r = camera.aperture_radius;
+    const Vec3f corner(f * half.x + r, f * half.y + r, f);
+    if (!std::isfinite(dot(corner, corner))) {
+        const std::optional<JsonCursor> focus = c.get("focus_distance");
+        (focus ? *focus : c.require("aperture_radius"))
+            .fail(fmt::format("a thin lens of aperture_radius {} focused at {} gives rays beyond float range", r, f));
+    }
+}
+
 void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget& budget) {
-    if (auto type = c.get("type")) type->choice("camera type", kCameraTypes);
+    if (auto type = c.get("type"))
+        camera.type = enum_of<CameraType>(type->choice("camera type", kCameraTypes), kCameraTypes);
     auto position = c.get("position");
     auto look_at = c.get("look_at");
     auto up = c.get("up");
@@ -97,7 +156,7 @@ void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget& budget) {
         camera.up = up->vec3f();
         if (camera.up == Vec3f(0.0f)) up->fail_expected("a nonzero up vector");
     }
-    if (auto v = c.get("fov")) camera.fov_degrees = v->number_f(Bounds::open(0, 180));
+    read_projection(c, camera);
     if (auto v = c.get("resolution")) {
         auto wh = v->elements(2, "an array of 2 integers [width, height]");
         camera.width = wh[0].integer(Bounds::closed(1, kMaxResolution));
@@ -105,8 +164,10 @@ void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget& budget) {
         check_film_memory(camera, *v, budget);
     }
     if (auto v = c.get("near")) camera.near = v->number_f(Bounds::at_least(0));
+    read_lens(c, camera);
     c.reject_unknown_keys();
     check_camera_frame(camera, c, position, look_at, up);
+    check_camera_extent(camera, c);
 }
 
 void read_film(JsonCursor c, FilmSettings& film) {
