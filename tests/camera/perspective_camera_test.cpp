@@ -60,5 +60,57 @@ TEST(PerspectiveCamera, NearMovesTheOriginAlongTheRay) {
     EXPECT_NEAR(length(r.d), 1.0f, 1e-6f);
 }
 
+// The half angle of the ray through film position `film`, measured from the view axis in the
+// plane of the axis and that position (looking down -z).
+float half_angle(const PerspectiveCamera& cam, Vec2f film) {
+    Ray r = cam.generate_ray(film);
+    return std::atan2(std::sqrt(r.d.x * r.d.x + r.d.y * r.d.y), -r.d.z);
+}
+
+// fov_axis (Mitsuba 3's): which extent of the image fov spans, for a wide and a tall image.
+TEST(PerspectiveCamera, FovAxisPicksTheExtentTheFovSpans) {
+    const float half = radians(30.0f);  // fov 60
+    struct Case {
+        FovAxis axis;
+        int w, h;
+        Vec2f edge;  // the film position at the middle of the spanned edge, or a corner
+    };
+    const Case cases[] = {
+        {FovAxis::kY, 200, 100, {100, 0}},       {FovAxis::kY, 100, 200, {50, 0}},
+        {FovAxis::kX, 200, 100, {200, 50}},      {FovAxis::kX, 100, 200, {100, 100}},
+        {FovAxis::kSmaller, 200, 100, {100, 0}}, {FovAxis::kSmaller, 100, 200, {100, 100}},
+        {FovAxis::kLarger, 200, 100, {200, 50}}, {FovAxis::kLarger, 100, 200, {50, 0}},
+        {FovAxis::kDiagonal, 200, 100, {200, 0}}, {FovAxis::kDiagonal, 100, 200, {0, 200}},
+        {FovAxis::kSmaller, 64, 64, {64, 32}},   {FovAxis::kLarger, 64, 64, {32, 0}},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::to_string(int(c.axis)) + " " + std::to_string(c.w) + "x" + std::to_string(c.h));
+        CameraSettings s = looking_down_minus_z(c.w, c.h, 60);
+        s.fov_axis = c.axis;
+        PerspectiveCamera cam(s);
+        EXPECT_NEAR(half_angle(cam, c.edge), half, 1e-5f);
+        // Square pixels: the other extent follows the aspect ratio, tangents in proportion.
+        const float tan_x = std::tan(half_angle(cam, {float(c.w), 0.5f * float(c.h)}));
+        const float tan_y = std::tan(half_angle(cam, {0.5f * float(c.w), 0.0f}));
+        EXPECT_NEAR(tan_x / tan_y, float(c.w) / float(c.h), 1e-5f);
+    }
+}
+
+// fov_axis y is version 1's camera, to the bit: the same rays, so the same images.
+TEST(PerspectiveCamera, FovAxisYIsTheDefaultAndVersion1sRays) {
+    CameraSettings s = looking_down_minus_z(37, 23, 41);
+    EXPECT_EQ(s.fov_axis, FovAxis::kY);
+    PerspectiveCamera cam(s);
+    const float half_height = std::tan(0.5f * radians(41.0f));
+    const float half_width = half_height * 37.0f / 23.0f;
+    const Vec3f forward = normalize(s.look_at - s.position), right = normalize(cross(forward, s.up));
+    const Vec3f up = cross(right, forward);
+    for (Vec2f film : {Vec2f(0, 0), Vec2f(3.25f, 17.5f), Vec2f(36.9f, 22.1f)}) {
+        float sx = (2.0f * film.x * (1.0f / 37.0f) - 1.0f) * half_width;
+        float sy = (1.0f - 2.0f * film.y * (1.0f / 23.0f)) * half_height;
+        EXPECT_EQ(cam.generate_ray(film).d, normalize(forward + right * sx + up * sy));
+    }
+}
+
 }  // namespace
 }  // namespace candela
