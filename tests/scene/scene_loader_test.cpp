@@ -33,7 +33,7 @@ TEST(SceneLoader, EmptySceneHasTheDocumentedDefaults) {
     EXPECT_EQ(s.camera.fov_degrees, 40.0f);
     EXPECT_EQ(s.camera.width, 512);
     EXPECT_EQ(s.camera.height, 512);
-    EXPECT_EQ(s.camera.near, 0.0f);
+    EXPECT_EQ(s.camera.near, 0.0f);  // the other camera keys: scene_camera_test.cpp
     EXPECT_EQ(s.film.filter, FilterType::kBox);
     EXPECT_EQ(s.film.tonemap, Tonemap::kClamp);
     EXPECT_EQ(s.film.exposure, 0.5f);
@@ -128,13 +128,6 @@ TEST(SceneLoaderCamera, PositionLookAtAndUpAreRead) {
     EXPECT_EQ(s.camera.position, Vec3f(1, 2, 3));
     EXPECT_EQ(s.camera.look_at, Vec3f(4, 5, 6));
     EXPECT_EQ(s.camera.up, Vec3f(0, 0, 1));
-}
-
-TEST(SceneLoaderCamera, TypePerspectiveIsTheOnlyType) {
-    EXPECT_EQ(load_json(R"({"camera": {"type": "perspective", "fov": 30}})").camera.fov_degrees,
-              30.0f);
-    EXPECT_EQ(load_error(R"({"camera": {"type": "orthographic"}})").message(),
-              "unknown camera type \"orthographic\"; expected one of: perspective");
 }
 
 TEST(SceneLoaderCamera, FovIsRead) {
