@@ -96,7 +96,7 @@ TEST(OrthographicCamera, ThinLensFocusesItsPlaneAndBlursTheRest) {
                 const Vec2f u(float(i) / 20.0f, float(j) / 20.0f);
                 const Vec2f seen = test::film_position_seeing(camera, frame, p, u, kWidth, kHeight);
                 EXPECT_LT(length(test::hit_at_depth(camera.generate_ray(seen, u), frame, depth) - p), 1e-4);
-                largest = std::max(largest, length(Vec3d(seen.x - film.x, seen.y - film.y, 0.0)));
+                largest = std::max(largest, length(Vec3d(double(seen.x - film.x), double(seen.y - film.y), 0.0)));
             }
         }
         EXPECT_NEAR(largest, radius, 1e-3 * radius + 2e-3);

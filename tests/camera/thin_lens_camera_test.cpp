@@ -54,12 +54,12 @@ TEST(ThinLensCamera, RaysOfOneFilmPositionMeetInTheFocusPlane) {
     const ThinLensCamera camera(s);
     const CameraFrame frame(s);
     for (Vec2f film : {Vec2f(80, 60), Vec2f(0.25f, 3.5f), Vec2f(159.5f, 119.75f), Vec2f(12, 101)}) {
-        const Vec3d expected = pinhole_point(s, film, kFocus);
+        const Vec3d expected = pinhole_point(s, film, double(kFocus));
         double worst = 0.0;
         for_lens_grid(17, [&](Vec2f u, bool) {
             const Ray r = camera.generate_ray(film, u);
             EXPECT_NEAR(length(Vec3d(r.d)), 1.0, 1e-6);
-            worst = std::max(worst, length(test::hit_at_depth(r, frame, kFocus) - expected));
+            worst = std::max(worst, length(test::hit_at_depth(r, frame, double(kFocus)) - expected));
         });
         // Float rays from points ~10 units from the origin: a few ulps of that.
         EXPECT_LT(worst, 1e-5) << "film " << film.x << ", " << film.y;
@@ -71,7 +71,7 @@ TEST(ThinLensCamera, PointInTheFocusPlaneMapsToOneFilmPosition) {
     const ThinLensCamera camera(s);
     const CameraFrame frame(s);
     const Vec2f film(37.3f, 88.6f);
-    const Vec3d p = pinhole_point(s, film, kFocus);
+    const Vec3d p = pinhole_point(s, film, double(kFocus));
     for_lens_grid(17, [&](Vec2f u, bool) {
         const Vec2f seen = test::film_position_seeing(camera, frame, p, u, kWidth, kHeight);
         EXPECT_NEAR(seen.x, film.x, 1e-3f);
@@ -98,7 +98,7 @@ TEST(ThinLensCamera, BlurCircleHasTheThinLensDiameter) {
             // The film position found must see p (film_position_seeing's affine model holds).
             const Vec3d q = test::hit_at_depth(camera.generate_ray(seen, u), frame, depth);
             EXPECT_LT(length(q - p), 1e-4 * depth);
-            const double r = length(Vec3d(seen.x - centre.x, seen.y - centre.y, 0.0));
+            const double r = length(Vec3d(double(seen.x - centre.x), double(seen.y - centre.y), 0.0));
             largest = std::max(largest, r);
             if (on_rim) smallest_on_rim = std::min(smallest_on_rim, r);
         });
