@@ -113,8 +113,8 @@ TEST(Accelerator, SphereHitAndReverseOrientation) {
 }
 
 TEST(Accelerator, UvIsComputedOnDemandInEachShapesConvention) {
-    // A mesh with vertex uvs interpolates them; a sphere follows the environment's convention,
-    // u = atan2(x, -z) / 2pi, v = acos(y) / pi of the outward normal.
+    // A mesh with vertex uvs interpolates them; a sphere follows pbrt's with +y up,
+    // u = atan2(-z, x) / 2pi, v = 1 - acos(y) / pi of the outward normal.
     TriangleMesh tri;
     tri.positions = {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
     tri.indices = {0, 1, 2};
@@ -124,12 +124,16 @@ TEST(Accelerator, UvIsComputedOnDemandInEachShapesConvention) {
     ASSERT_TRUE(hit);
     EXPECT_NEAR(scene.accel->uv(*hit).x, 0.625f, 1e-6f);
     EXPECT_NEAR(scene.accel->uv(*hit).y, 0.75f, 1e-6f);
-    // The sphere seen from +x: the hit's normal is +x, u = 1/4, v = 1/2.
-    auto on_sphere = scene.accel->intersect(Ray{{20, 0, 0}, {-1, 0, 0}});
+    // The sphere seen from -z: the hit's normal is -z, u = 1/4, v = 1/2.
+    auto on_sphere = scene.accel->intersect(Ray{{10, 0, -20}, {0, 0, 1}});
     ASSERT_TRUE(on_sphere);
     EXPECT_EQ(on_sphere->shape_id, 1u);
     EXPECT_NEAR(scene.accel->uv(*on_sphere).x, 0.25f, 1e-6f);
     EXPECT_NEAR(scene.accel->uv(*on_sphere).y, 0.5f, 1e-6f);
+    // From above: the top pole is v = 1, as an image's top row.
+    auto top = scene.accel->intersect(Ray{{10, 20, 0}, {0, -1, 0}});
+    ASSERT_TRUE(top);
+    EXPECT_NEAR(scene.accel->uv(*top).y, 1.0f, 1e-6f);
 }
 
 TEST(Accelerator, OcclusionRespectsTmax) {

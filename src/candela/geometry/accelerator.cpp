@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "candela/core/check.h"
 #include "candela/core/error.h"
 #include "candela/geometry/ray_offset.h"
 #include "candela/geometry/sphere_intersection.h"
@@ -30,19 +31,21 @@ void check_embree(RTCDevice device, const char* step) {
         throw RenderError(std::string("Embree failed to ") + step + " (error code " + std::to_string(int(code)) + ")");
 }
 
-// Embree's user geometry calls these for the spheres; the user pointer is the Sphere.
-void sphere_bounds(const RTCBoundsFunctionArguments* args) {
-    const auto& s = *static_cast<const Sphere*>(args->geometryUserPtr);
-    // Round outwards so float bounds contain the double sphere.
+// Float bounds of a sphere, rounded outwards so that they contain the double sphere.
+void write_sphere_bounds(const Sphere& s, RTCBounds* b) {
     auto lo = [](double v) { return std::nextafter(float(v), -kInfinity); };
     auto hi = [](double v) { return std::nextafter(float(v), kInfinity); };
-    RTCBounds* b = args->bounds_o;
     b->lower_x = lo(s.center.x - s.radius);
     b->lower_y = lo(s.center.y - s.radius);
     b->lower_z = lo(s.center.z - s.radius);
     b->upper_x = hi(s.center.x + s.radius);
     b->upper_y = hi(s.center.y + s.radius);
     b->upper_z = hi(s.center.z + s.radius);
+}
+
+// Embree's user geometry calls these for the spheres; the user pointer is the Sphere.
+void sphere_bounds(const RTCBoundsFunctionArguments* args) {
+    write_sphere_bounds(*static_cast<const Sphere*>(args->geometryUserPtr), args->bounds_o);
 }
 
 std::optional<double> intersect_embree_ray(const Sphere& s, const RTCRay& r) {
@@ -75,6 +78,92 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     if (intersect_embree_ray(s, *r)) r->tfar = -kInfinity;  // Embree's mark for "occluded"
 }
 
+// The uv of a point at barycentrics b of triangle `tri`: Accelerator::uv's rule, which the alpha
+// test must share so that a cutout and a texture on the same surface line up.
+Vec2f mesh_uv(const TriangleMesh& mesh, uint32_t tri, const Vec2f& b) {
+    if (mesh.uvs.empty()) return b;
+    const uint32_t* v = &mesh.indices[3 * size_t(tri)];
+    float b0 = 1.0f - b.x - b.y;
+    return mesh.uvs[v[0]] * b0 + mesh.uvs[v[1]] * b.x + mesh.uvs[v[2]] * b.y;
+}
+
+// A shape that alpha_cutout.h cuts out: the Embree user data of its filter functions (meshes) or
+// of its intersection functions (spheres, whose Embree user geometry runs no filters).
+struct CutoutShape {
+    const TriangleMesh* mesh = nullptr;
+    const Sphere* sphere = nullptr;
+    FloatParam alpha;
+    const TextureSet* textures = nullptr;
+    uint32_t id = 0;  // the Embree geometry id = shape id, hashed with the primitive
+
+    // Whether the ray (o, d) stops at the point p, uv of primitive `prim`.
+    bool stops(const Vec3f& o, const Vec3f& d, uint32_t prim, const Vec2f& uv, const Vec3f& p) const {
+        float a = alpha.is_textured() ? textures->eval(alpha, TextureContext{uv, p}) : alpha.value;
+        return alpha_stops(a, alpha_hash(o, d, id, prim));
+    }
+};
+
+// Embree's intersection and occlusion filter for cut-out meshes: called for each candidate hit,
+// it rejects (valid = 0) those the alpha test lets through, and Embree then looks further.
+void mesh_cutout_filter(const RTCFilterFunctionNArguments* args) {
+    const auto& c = *static_cast<const CutoutShape*>(args->geometryUserPtr);
+    const TriangleMesh& mesh = *c.mesh;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const uint32_t tri = RTCHitN_primID(args->hit, args->N, i);
+        const Vec2f b(RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+        const uint32_t* v = &mesh.indices[3 * size_t(tri)];
+        const Vec3f p = mesh.positions[v[0]] * (1.0f - b.x - b.y) + mesh.positions[v[1]] * b.x +
+                        mesh.positions[v[2]] * b.y;
+        const Vec3f o(RTCRayN_org_x(args->ray, args->N, i), RTCRayN_org_y(args->ray, args->N, i),
+                      RTCRayN_org_z(args->ray, args->N, i));
+        const Vec3f d(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                      RTCRayN_dir_z(args->ray, args->N, i));
+        if (!c.stops(o, d, tri, mesh_uv(mesh, tri, b), p)) args->valid[i] = 0;
+    }
+}
+
+// The nearest root in (tnear, tfar) of a cut-out sphere at which the ray stops: the near root,
+// or the far one when the near one lets it through. The two crossings are hashed as primitives
+// 0 and 1, so that they are decided independently.
+std::optional<double> intersect_cutout_sphere(const CutoutShape& c, const RTCRay& r) {
+    const Sphere& s = *c.sphere;
+    const Vec3f o(r.org_x, r.org_y, r.org_z), d(r.dir_x, r.dir_y, r.dir_z);
+    double tmin = double(r.tnear);
+    for (uint32_t root = 0; root < 2; ++root) {
+        std::optional<double> t = intersect_sphere(s, Vec3d(o), Vec3d(d), tmin, double(r.tfar));
+        if (!t) return t;
+        Vec3d p = project_to_sphere(s, Vec3d(o) + Vec3d(d) * *t);
+        if (c.stops(o, d, root, sphere_uv((p - s.center) / s.radius), Vec3f(p))) return t;
+        tmin = *t;
+    }
+    return std::nullopt;
+}
+
+void cutout_sphere_bounds(const RTCBoundsFunctionArguments* args) {
+    write_sphere_bounds(*static_cast<const CutoutShape*>(args->geometryUserPtr)->sphere, args->bounds_o);
+}
+
+void cutout_sphere_intersect(const RTCIntersectFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
+    std::optional<double> t = intersect_cutout_sphere(*static_cast<const CutoutShape*>(args->geometryUserPtr), rh->ray);
+    if (!t) return;
+    rh->ray.tfar = std::min(float(*t), rh->ray.tfar);  // as sphere_intersect
+    rh->hit.geomID = args->geomID;
+    rh->hit.primID = args->primID;
+    rh->hit.instID[0] = args->context->instID[0];
+    rh->hit.u = 0.0f;
+    rh->hit.v = 0.0f;
+    rh->hit.Ng_x = rh->hit.Ng_y = rh->hit.Ng_z = 0.0f;
+}
+
+void cutout_sphere_occluded(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* r = reinterpret_cast<RTCRay*>(args->ray);
+    if (intersect_cutout_sphere(*static_cast<const CutoutShape*>(args->geometryUserPtr), *r)) r->tfar = -kInfinity;
+}
+
 RTCRay to_embree(const Ray& ray) {
     RTCRay r;
     r.org_x = ray.o.x;
@@ -104,6 +193,9 @@ struct Accelerator::Impl {
         std::vector<Vec3f> face_normals;
     };
     std::vector<Geometry> geometries;
+    // The cut-out shapes' filter data, in a vector reserved before any is attached: Embree keeps
+    // pointers to the elements.
+    std::vector<CutoutShape> cutouts;
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
 
@@ -112,7 +204,7 @@ struct Accelerator::Impl {
         if (device) rtcReleaseDevice(device);
     }
 
-    void attach_mesh(const TriangleMesh& mesh, unsigned id) {
+    void attach_mesh(const TriangleMesh& mesh, unsigned id, const CutoutShape* cutout) {
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
         // Embree copies into its own buffers, which it pads for its SIMD loads.
         auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -125,16 +217,29 @@ struct Accelerator::Impl {
         auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
             g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangle_count()));
         std::copy(mesh.indices.begin(), mesh.indices.end(), idx);
+        if (cutout) {
+            rtcSetGeometryUserData(g, const_cast<CutoutShape*>(cutout));
+            rtcSetGeometryIntersectFilterFunction(g, mesh_cutout_filter);
+            rtcSetGeometryOccludedFilterFunction(g, mesh_cutout_filter);
+        }
         commit_and_attach(g, id);
     }
 
-    void attach_sphere(const Sphere& sphere, unsigned id) {
+    // Opaque spheres keep the Sphere as user data (one load fewer per test than the cutout's).
+    void attach_sphere(const Sphere& sphere, unsigned id, const CutoutShape* cutout) {
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(g, 1);
-        rtcSetGeometryUserData(g, const_cast<Sphere*>(&sphere));
-        rtcSetGeometryBoundsFunction(g, sphere_bounds, nullptr);
-        rtcSetGeometryIntersectFunction(g, sphere_intersect);
-        rtcSetGeometryOccludedFunction(g, sphere_occluded);
+        if (cutout) {
+            rtcSetGeometryUserData(g, const_cast<CutoutShape*>(cutout));
+            rtcSetGeometryBoundsFunction(g, cutout_sphere_bounds, nullptr);
+            rtcSetGeometryIntersectFunction(g, cutout_sphere_intersect);
+            rtcSetGeometryOccludedFunction(g, cutout_sphere_occluded);
+        } else {
+            rtcSetGeometryUserData(g, const_cast<Sphere*>(&sphere));
+            rtcSetGeometryBoundsFunction(g, sphere_bounds, nullptr);
+            rtcSetGeometryIntersectFunction(g, sphere_intersect);
+            rtcSetGeometryOccludedFunction(g, sphere_occluded);
+        }
         commit_and_attach(g, id);
     }
 
@@ -200,7 +305,7 @@ struct Accelerator::Impl {
 };
 
 Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
-                         std::span<const Shape> shapes)
+                         std::span<const Shape> shapes, AlphaCutouts cutouts)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.geometries.resize(shapes.size());
@@ -219,12 +324,20 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
     // ROBUST: no traversal shortcuts that can miss hits at shared edges.
     rtcSetSceneFlags(m.scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(m.scene, RTC_BUILD_QUALITY_HIGH);
+    m.cutouts.reserve(shapes.size());
     for (unsigned id = 0; id < shapes.size(); ++id) {
         const Shape& shape = shapes[id];
+        const CutoutShape* cutout = nullptr;
+        if (cutouts.cuts(id)) {
+            const FloatParam& alpha = cutouts.shape_alpha[id];
+            CANDELA_CHECK(!alpha.is_textured() || cutouts.textures);
+            cutout = &m.cutouts.emplace_back(CutoutShape{m.geometries[id].mesh, m.geometries[id].sphere, alpha,
+                                                         cutouts.textures, id});
+        }
         if (shape.kind == ShapeKind::kMesh)
-            m.attach_mesh(meshes[shape.index], id);
+            m.attach_mesh(meshes[shape.index], id, cutout);
         else
-            m.attach_sphere(spheres[shape.index], id);
+            m.attach_sphere(spheres[shape.index], id, cutout);
     }
     rtcCommitScene(m.scene);
     check_embree(m.device, "build the scene");
@@ -254,17 +367,27 @@ std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
 
 Vec2f Accelerator::uv(const SurfaceHit& hit) const {
     const Impl::Geometry& g = impl_->geometries[hit.shape_id];
+    if (g.sphere) return sphere_uv((Vec3d(hit.p) - g.sphere->center) / g.sphere->radius);
+    return mesh_uv(*g.mesh, hit.prim_id, hit.b);
+}
+
+ShadingGeometry Accelerator::shading(const SurfaceHit& hit) const {
+    const Impl::Geometry& g = impl_->geometries[hit.shape_id];
     if (g.sphere) {
-        Vec3d n = (Vec3d(hit.p) - g.sphere->center) / g.sphere->radius;
-        // The environment's convention: +Y up, u = atan2(x, -z) / 2pi, v = acos(y) / pi.
-        double u = std::atan2(n.x, -n.z) / (2.0 * kPiD);
-        return Vec2f(float(u < 0.0 ? u + 1.0 : u), float(std::acos(std::clamp(n.y, -1.0, 1.0)) / kPiD));
+        const Vec3d v = Vec3d(hit.p) - g.sphere->center;
+        return sphere_shading_geometry(v / length(v), g.sphere->radius, g.sphere->reverse_orientation);
     }
     const TriangleMesh& mesh = *g.mesh;
-    if (mesh.uvs.empty()) return hit.b;
     const uint32_t* v = &mesh.indices[3 * size_t(hit.prim_id)];
-    float b1 = hit.b.x, b2 = hit.b.y, b0 = 1.0f - b1 - b2;
-    return mesh.uvs[v[0]] * b0 + mesh.uvs[v[1]] * b1 + mesh.uvs[v[2]] * b2;
+    const Vec3f p[3] = {mesh.positions[v[0]], mesh.positions[v[1]], mesh.positions[v[2]]};
+    Vec2f uvs[3];
+    Vec3f normals[3];
+    for (int k = 0; k < 3; ++k) {
+        if (!mesh.uvs.empty()) uvs[k] = mesh.uvs[v[k]];
+        if (!mesh.normals.empty()) normals[k] = mesh.normals[v[k]];
+    }
+    return triangle_shading_geometry(p, mesh.uvs.empty() ? nullptr : uvs, mesh.normals.empty() ? nullptr : normals,
+                                     hit.b, hit.ng);
 }
 
 bool Accelerator::occluded(const Ray& ray) const {

@@ -7,6 +7,8 @@
 #include <optional>
 #include <span>
 
+#include "candela/geometry/alpha_cutout.h"
+#include "candela/geometry/shading_geometry.h"
 #include "candela/geometry/shape.h"
 #include "candela/geometry/sphere.h"
 #include "candela/geometry/surface_hit.h"
@@ -42,9 +44,10 @@ inline constexpr size_t kMaxTrianglesWithNormalTable = size_t(1) << 16;
 
 class Accelerator {
   public:
-    // The spans must outlive the accelerator: hits read vertex data from them.
+    // The spans must outlive the accelerator: hits read vertex data from them. Shapes that
+    // `cutouts` cuts out let rays through where their alpha says (alpha_cutout.h).
     Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
-                std::span<const Shape> shapes);
+                std::span<const Shape> shapes, AlphaCutouts cutouts = {});
     ~Accelerator();
     Accelerator(const Accelerator&) = delete;
     Accelerator& operator=(const Accelerator&) = delete;
@@ -52,10 +55,12 @@ class Accelerator {
     // The closest hit with ray.tmin <= t <= ray.tmax. Thread-safe.
     std::optional<SurfaceHit> intersect(const Ray& ray) const;
     // The surface parameterisation (u, v) at a hit this accelerator returned: the mesh's vertex
-    // uvs interpolated, or the barycentrics (b1, b2) for meshes without uvs (a quad's (s, t));
-    // on spheres the environment's convention, u = atan2(x, -z) / 2pi, v = acos(y) / pi of the
-    // outward normal.
+    // uvs interpolated (a quad's (s, t)), or the barycentrics (b1, b2) for meshes without uvs; on
+    // spheres pbrt's, u = phi / 2pi, v = 1 - theta / pi about +y (shading_geometry.h).
     Vec2f uv(const SurfaceHit& hit) const;
+    // The uv and the derivatives of point and shading normal at a hit (shading_geometry.h):
+    // for materials with a tangent frame, normal map or bump map only, so computed on request.
+    ShadingGeometry shading(const SurfaceHit& hit) const;
     // Whether anything lies on the ray within [tmin, tmax] (shadow rays). Thread-safe.
     bool occluded(const Ray& ray) const;
     // World bounds of all shapes.

@@ -7,11 +7,13 @@
 // once (`bsdf`), so the path tracer reads it in place, as before textures existed. A textured
 // material builds its BSDF at each hit from the texture values there (build_bsdf).
 #include <array>
+#include <concepts>
 #include <span>
 
 #include "candela/core/check.h"
 #include "candela/materials/bsdf.h"
 #include "candela/materials/lobe_params.h"
+#include "candela/materials/surface_params.h"
 
 namespace candela {
 
@@ -19,7 +21,28 @@ struct Material {
     Bsdf bsdf;  // the lobes at the parameters' constant values (all of them when !textured)
     std::array<LobeParams, Bsdf::kMaxLobes> params{};  // lobe k of bsdf comes from params[k]
     bool textured = false;  // some parameter is a texture: use build_bsdf at each hit
+    // The shading frame needs the surface's parametrization (render/shading_frame.h): some lobe
+    // is anisotropic, or `surface` maps the normal. Kept by set_surface and make_material.
+    bool needs_shading_geometry = false;
+    bool anisotropic = false;  // some lobe's x axis must follow the surface's dpdu
+    SurfaceParams surface;     // normal or bump map, alpha
 };
+
+// Gives material `m` the surface parameters `s`.
+inline void set_surface(Material& m, const SurfaceParams& s) {
+    m.surface = s;
+    m.needs_shading_geometry = m.anisotropic || s.perturbs_normal();
+}
+
+// Whether lobe parameters `p` describe an anisotropic lobe: a lobe type says so by an
+// is_anisotropic() member (isotropic types need none).
+template <class P>
+CANDELA_HD bool lobe_is_anisotropic(const P& p) {
+    if constexpr (requires { { p.is_anisotropic() } -> std::same_as<bool>; })
+        return p.is_anisotropic();
+    else
+        return false;
+}
 
 // The material's BSDF at a shading point.
 CANDELA_HD inline Bsdf build_bsdf(const Material& m, const TextureSet& textures, const TextureContext& ctx) {
@@ -42,7 +65,9 @@ inline Material make_material(std::span<const LobeParams> parts) {
         // Textured parameters contribute their constant here; build_bsdf replaces the lobe.
         m.bsdf.lobes[k] = visit([&](const auto& q) { return q.lobe(no_textures, anywhere); }, p);
         m.textured = m.textured || visit([](const auto& q) { return q.is_textured(); }, p);
+        m.anisotropic = m.anisotropic || visit([](const auto& q) { return lobe_is_anisotropic(q); }, p);
     }
+    m.needs_shading_geometry = m.anisotropic;
     return m;
 }
 

@@ -9,6 +9,7 @@
 #include "candela/math/frame.h"
 #include "candela/render/ray_counters.h"
 #include "candela/render/render_settings.h"
+#include "candela/render/shading_frame.h"
 #include "candela/sampling/sampler.h"
 #include "candela/scene/scene.h"
 
@@ -16,24 +17,33 @@ namespace candela {
 
 // A hit seen from the ray that found it: its BSDF in the shading frame and the outgoing direction.
 // An untextured material's BSDF is read in place; a textured one is built here from the texture
-// values at the hit (materials/material.h), which needs the hit's surface coordinates.
+// values at the hit (materials/material.h), which needs the hit's surface coordinates. The frame
+// is Frame::from_normal(ns) unless the material maps the normal or has anisotropic lobes; those
+// ask the accelerator for the surface's parametrization (render/shading_frame.h).
 struct PathVertex {
     const SurfaceHit& hit;
-    std::optional<Bsdf> textured_bsdf;  // engaged only for textured materials
+    std::optional<ShadingGeometry> geometry;  // engaged only when the material needs it
+    std::optional<Bsdf> textured_bsdf;        // engaged only for textured materials
     const Bsdf& bsdf;
-    Frame frame;  // z = shading normal, on the shape's front side
+    Frame frame;  // z = shading normal, on the geometric normal's side
     Vec3f wo;     // towards where the path came from, local
 
     PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray)
-        : hit(h),
-          bsdf(material_bsdf(scene, accel, scene.materials[scene.shapes[h.shape_id].material])),
-          frame(Frame::from_normal(h.ns)),
-          wo(frame.to_local(-ray.d)) {}
+        : PathVertex(scene, accel, h, ray, scene.materials[scene.shapes[h.shape_id].material]) {}
 
   private:
+    PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, const Material& m)
+        : hit(h),
+          bsdf(material_bsdf(scene, accel, m)),
+          frame(m.needs_shading_geometry ? shading_frame(m, scene.textures, *geometry, h) : Frame::from_normal(h.ns)),
+          wo(frame.to_local(-ray.d)) {}
+
     const Bsdf& material_bsdf(const Scene& scene, const Accelerator& accel, const Material& m) {
+        if (m.needs_shading_geometry) [[unlikely]]
+            geometry.emplace(accel.shading(hit));
         if (!m.textured) return m.bsdf;
-        return textured_bsdf.emplace(build_bsdf(m, scene.textures, TextureContext{accel.uv(hit), hit.p}));
+        const Vec2f uv = geometry ? geometry->uv : accel.uv(hit);
+        return textured_bsdf.emplace(build_bsdf(m, scene.textures, TextureContext{uv, hit.p}));
     }
 };
 

@@ -105,6 +105,19 @@ void render_tile(const SampleContext& c, const CameraT& camera, const Tile& tile
 
 }  // namespace
 
+AlphaCutouts alpha_cutouts(const Scene& scene) {
+    AlphaCutouts cutouts;
+    cutouts.textures = &scene.textures;
+    bool any = false;
+    for (const Shape& shape : scene.shapes) {
+        const SurfaceParams& surface = scene.materials[shape.material].surface;
+        cutouts.shape_alpha.push_back(surface.alpha);
+        any = any || surface.cuts_out();
+    }
+    if (!any) cutouts.shape_alpha.clear();
+    return cutouts;
+}
+
 LightSet build_light_set(const Scene& scene, const Accelerator& accel) {
     std::optional<EnvironmentLight> environment;
     if (const auto& env = scene.environment)
@@ -123,7 +136,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
 RenderResult render(const Scene& scene, const RenderOptions& options, RenderState start) {
     RenderResult result;
     Clock::time_point build_start = Clock::now();
-    Accelerator accel(scene.meshes, scene.spheres, scene.shapes);
+    Accelerator accel(scene.meshes, scene.spheres, scene.shapes, alpha_cutouts(scene));
 
     LightSet lights = build_light_set(scene, accel);
     result.stats.build_seconds = seconds_since(build_start);

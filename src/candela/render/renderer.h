@@ -11,6 +11,7 @@
 #include <functional>
 #include <optional>
 
+#include "candela/geometry/alpha_cutout.h"
 #include "candela/image/image.h"
 #include "candela/render/ray_counters.h"
 #include "candela/render/render_state.h"
@@ -62,6 +63,9 @@ struct RenderResult {
     RenderState state;  // the sums after the last complete pass: what a checkpoint saves
     RenderEnd end = RenderEnd::kComplete;
 };
+
+// Each shape's alpha (its material's) for the accelerator's cutouts, reading scene.textures.
+AlphaCutouts alpha_cutouts(const Scene& scene);
 
 // The scene's lights: its emitting shapes and its environment, selected as the integrator settings
 // say. `accel` (built over the same scene) gives the scene's size for the environment's power.

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -19,6 +20,7 @@ constexpr std::array<std::string_view, 5> kMaterialTypes = {"diffuse", "mirror",
 constexpr std::array<std::string_view, 4> kLobeMaterialTypes = {"diffuse", "mirror", "dielectric",
                                                               "transmission"};
 constexpr std::array<std::string_view, 2> kFresnelNames = {"exact", "schlick"};
+constexpr std::array<std::string_view, 2> kNormalMapConventions = {"opengl", "directx"};
 // Reflectances above 1 would create energy; negative ones are meaningless.
 constexpr Bounds kReflectance = Bounds::closed(0, 1);
 
@@ -64,9 +66,30 @@ Material read_mix(JsonCursor& c, Scene& scene) {
     return make_material(params);
 }
 
+// The keys every material takes (a mix's, not its parts'): normal_map (a colour texture; a
+// constant tilts the normal the same way everywhere), normal_map_convention, bump_map, alpha.
+SurfaceParams read_surface(JsonCursor& c, Scene& scene) {
+    SurfaceParams s;
+    std::optional<JsonCursor> normal_map = c.get("normal_map");
+    if (normal_map) s.normal_map = read_color_param(*normal_map, scene, Bounds::closed(0, 1));
+    if (auto v = c.get("normal_map_convention")) {
+        if (!normal_map) v->fail("normal_map_convention needs a normal_map");
+        s.normal_map_convention = v->choice("normal map convention", kNormalMapConventions) == "directx"
+                                      ? NormalMapConvention::kDirectX
+                                      : NormalMapConvention::kOpenGl;
+    }
+    if (auto v = c.get("bump_map")) {
+        if (normal_map) v->fail("a material takes a normal_map or a bump_map, not both");
+        s.bump_map = read_float_param(*v, scene, Bounds{});
+    }
+    if (auto v = c.get("alpha")) s.alpha = read_float_param(*v, scene, Bounds::closed(0, 1));
+    return s;
+}
+
 Material read_material(JsonCursor c, Scene& scene) {
     std::string_view type = c.require("type").choice("material type", kMaterialTypes);
     Material material = type == "mix" ? read_mix(c, scene) : make_material(read_lobe(c, type, scene));
+    set_surface(material, read_surface(c, scene));
     c.reject_unknown_keys();
     return material;
 }

@@ -40,6 +40,13 @@ class TextureSet {
         if (!holds(p.texture)) return p.value;
         return clamp_channels(color(p.texture, ctx), p.lo, p.hi);
     }
+    // The parameter's three channels as a vector, for data that is not a colour (a normal map's
+    // x, y, z), clamped as eval's. Colours are RGB today; the spectral mode must read the RGB of
+    // the texture here, never a spectrum.
+    CANDELA_HD Vec3f eval_vector(const ColorParam& p, const TextureContext& ctx) const {
+        const Color c = eval(p, ctx);
+        return Vec3f(c.r, c.g, c.b);
+    }
     // A colour parameter read as a number (a texture input that gives a number: `mix` of numbers).
     CANDELA_HD float number(const ColorParam& p, const TextureContext& ctx) const {
         if (!holds(p.texture)) return channel_average(p.value);
