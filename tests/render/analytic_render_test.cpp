@@ -14,27 +14,15 @@
 #include <string>
 #include <vector>
 
+#include "support/polygon_irradiance.h"
 #include "support/render_moments.h"
 #include "support/test_scenes.h"
 
 namespace candela {
 namespace {
 
-using Polygon = std::vector<Vec3d>;
-
-// Irradiance at p (unit normal n) from a polygon of uniform radiance L lying wholly on the side of
-// p's tangent plane that n points to (then every edge term has the same sign).
-double polygon_irradiance(const Vec3d& p, const Vec3d& n, const Polygon& polygon, double L) {
-    double sum = 0.0;
-    for (size_t i = 0; i < polygon.size(); ++i) {
-        Vec3d a = normalize(polygon[i] - p), b = normalize(polygon[(i + 1) % polygon.size()] - p);
-        Vec3d g = cross(a, b);
-        double sin_theta = length(g);
-        if (sin_theta == 0.0) continue;
-        sum += std::atan2(sin_theta, dot(a, b)) * dot(n, g / sin_theta);
-    }
-    return 0.5 * L * std::abs(sum);
-}
+using test::Polygon;
+using test::polygon_irradiance;
 
 TEST(PolygonIrradiance, MatchesRectangleCornerFormFactor) {
     // The point under one corner of an a x b rectangle parallel to it at height c: the form factor
