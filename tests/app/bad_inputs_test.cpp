@@ -87,13 +87,15 @@ const BadInput kBadInputs[] = {
      "duplicate key \"film\""},
     {"deep_nesting_unclosed.json", kDeepNesting, kError, "", 1, 100001, "",
      "JSON syntax error while parsing value - unexpected end of input"},
-    // --- wrong types and shapes of values (18)
+    // --- wrong types and shapes of values (19)
     {"boolean_for_number.json", kStructure, kError, "", 2, 21, "/camera/fov",
      "expected a number in (0, 180), got true"},
     {"environment_file_and_color.json", kStructure, kError, "", 3, 57, "/lights/0/color",
      "give \"file\" or \"color\", not both"},
     {"environment_without_radiance.json", kStructure, kError, "", 3, 5, "/lights/0",
      "an environment needs \"file\" (an .hdr or .exr image) or \"color\""},
+    {"normal_map_and_bump_map.json", kStructure, kError, "", 4, 27, "/materials/bumpy/bump_map",
+     "give \"normal_map\" or \"bump_map\", not both"},
     {"materials_not_object.json", kStructure, kError, "", 2, 16, "/materials",
      "expected an object, got an array of 1 element"},
     {"missing_required_key.json", kStructure, kError, "", 4, 5, "/shapes/0",
@@ -138,7 +140,7 @@ const BadInput kBadInputs[] = {
     {"sphere_with_transform.json", kUnknownName, kError, "", 5, 6, "/shapes/0",
      "unknown key \"transform\"; expected one of: center, emission, material, radius, reverse_orientation, two_sided, type"},
     {"string_with_braces_before_error.json", kUnknownName, kError, "", 4, 51, "/materials/}{",
-     "unknown key \"ior\"; expected one of: albedo, type"},
+     "unknown key \"ior\"; expected one of: albedo, alpha, bump_map, normal_map, normal_map_convention, type"},
     {"transform_unknown_step.json", kUnknownName, kError, "", 5, 42, "/shapes/0/transform/0",
      "unknown key \"rotat\" (did you mean \"rotate\"?)"},
     {"undefined_material.json", kUnknownName, kError, "", 7, 70, "/shapes/0/material",
@@ -165,9 +167,11 @@ const BadInput kBadInputs[] = {
      "unknown key \"renderer\"; expected one of: camera, film, integrator, lights, materials, sampler, shapes, textures"},
     {"unknown_texture.json", kUnknownName, kError, "", 3, 64, "/materials/m/albedo/texture",
      "unknown texture \"wod\"; defined textures: wood"},
-    // --- numbers: negative, zero, NaN/Inf, beyond range (34)
+    // --- numbers: negative, zero, NaN/Inf, beyond range (35)
     {"albedo_out_of_range.json", kNumber, kError, "", 3, 48, "/materials/red/albedo/1",
      "expected a number in [0, 1], got 1.2"},
+    {"alpha_out_of_range.json", kNumber, kError, "", 3, 57, "/materials/leaf/alpha",
+     "expected a number in [0, 1], got 1.5"},
     {"aperture_radius_negative.json", kNumber, kError, "", 2, 44, "/camera/aperture_radius",
      "expected a number >= 0, got -0.05"},
     {"environment_scale_negative.json", kNumber, kError, "", 2, 59, "/lights/0/scale",

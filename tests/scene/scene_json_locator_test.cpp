@@ -168,7 +168,7 @@ TEST(SceneErrorLocation, UnknownKeyPointsAtTheKeyOfAnEscapedName) {
     EXPECT_EQ(e.where().json_pointer, "/materials/x~1y~0");
     EXPECT_EQ(e.where().line, 2);
     EXPECT_EQ(e.where().column, 3);
-    EXPECT_EQ(e.message(), "unknown key \"tnit\"; expected one of: albedo, type");
+    EXPECT_EQ(e.message(), "unknown key \"tnit\"; expected one of: albedo, alpha, bump_map, normal_map, normal_map_convention, type");
 }
 
 TEST(SceneErrorLocation, DuplicateKeyIsReportedAtItsSecondOccurrence) {

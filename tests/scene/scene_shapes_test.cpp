@@ -116,7 +116,7 @@ TEST(SceneLoaderMaterials, TransmissionIorAndTintAreRead) {
     EXPECT_EQ(b.tint, Rgb(1.0f));
     EXPECT_EQ(load_error(R"({"materials": {"a": {"type": "transmission", "fresnel": "exact"}}})")
                   .message(),
-              "unknown key \"fresnel\"; expected one of: ior, tint, type");
+              "unknown key \"fresnel\"; expected one of: alpha, bump_map, ior, normal_map, normal_map_convention, tint, type");
 }
 
 TEST(SceneLoaderMaterials, MixConcatenatesTheLobesInOrder) {
@@ -148,7 +148,7 @@ TEST(SceneLoaderMaterials, MixPartsAreCheckedLikeMaterials) {
     EXPECT_EQ(not_array.message(), "expected an array, got an empty object");
     SceneError extra = load_error(
         R"({"materials": {"m": {"type": "mix", "lobes": [{"type": "mirror"}], "albedo": 1}}})");
-    EXPECT_EQ(extra.message(), "unknown key \"albedo\"; expected one of: lobes, type");
+    EXPECT_EQ(extra.message(), "unknown key \"albedo\"; expected one of: alpha, bump_map, lobes, normal_map, normal_map_convention, type");
 }
 
 TEST(SceneLoaderMaterials, NamesKeepFileOrderAndParallelTheMaterials) {
@@ -163,9 +163,68 @@ TEST(SceneLoaderMaterials, NamesKeepFileOrderAndParallelTheMaterials) {
 TEST(SceneLoaderMaterials, KeysOfOtherTypesAreUnknown) {
     SceneError e = load_error(R"({"materials": {"a": {"type": "diffuse", "ior": 1.5}}})");
     EXPECT_EQ(e.where().json_pointer, "/materials/a");
-    EXPECT_EQ(e.message(), "unknown key \"ior\"; expected one of: albedo, type");
+    EXPECT_EQ(e.message(), "unknown key \"ior\"; expected one of: albedo, alpha, bump_map, normal_map, normal_map_convention, type");
     EXPECT_EQ(load_error(R"({"materials": {"a": {"albedo": 0.5}}})").message(),
               "missing required key \"type\"");
+}
+
+TEST(SceneLoaderMaterials, NormalMapIsReadOnAnyMaterial) {
+    Scene s = load_json(R"({"materials": {"a": {"type": "diffuse", "normal_map": [0.6, 0.5, 0.9]},
+                                          "b": {"type": "mirror", "normal_map": [0.5, 0.4, 1],
+                                                "normal_map_convention": "directx"},
+                                          "c": {"type": "mix", "lobes": [{"type": "diffuse"}],
+                                                "normal_map": 0.75},
+                                          "d": {"type": "dielectric"}}})");
+    ASSERT_TRUE(s.materials[0].surface.normal_map);
+    EXPECT_EQ(s.materials[0].surface.normal_map->value, Rgb(0.6f, 0.5f, 0.9f));
+    EXPECT_EQ(s.materials[0].surface.normal_map_convention, NormalMapConvention::kOpenGl);
+    EXPECT_TRUE(s.materials[0].needs_shading_geometry);
+    EXPECT_EQ(s.materials[1].surface.normal_map_convention, NormalMapConvention::kDirectX);
+    ASSERT_TRUE(s.materials[2].surface.normal_map);
+    EXPECT_EQ(s.materials[2].surface.normal_map->value, Rgb(0.75f));
+    EXPECT_FALSE(s.materials[3].surface.normal_map);
+    EXPECT_FALSE(s.materials[3].needs_shading_geometry);
+    SceneError alone = load_error(R"({"materials": {"a": {"type": "diffuse", "normal_map_convention": "opengl"}}})");
+    EXPECT_EQ(alone.where().json_pointer, "/materials/a/normal_map_convention");
+    EXPECT_EQ(alone.message(), "normal_map_convention needs a normal_map");
+    EXPECT_EQ(load_error(R"({"materials": {"a": {"type": "diffuse", "normal_map": 0.5,
+                                                 "normal_map_convention": "vulkan"}}})")
+                  .message(),
+              "unknown normal map convention \"vulkan\"; expected one of: directx, opengl");
+    EXPECT_EQ(load_error(R"({"materials": {"a": {"type": "diffuse", "normal_map": 1.5}}})").message(),
+              "expected a number in [0, 1], got 1.5");
+    // A mix's parts are lobes: the surface keys belong to the mix.
+    EXPECT_EQ(load_error(R"({"materials": {"m": {"type": "mix", "lobes": [{"type": "mirror", "alpha": 0.5}]}}})")
+                  .where()
+                  .json_pointer,
+              "/materials/m/lobes/0");
+}
+
+TEST(SceneLoaderMaterials, BumpMapIsReadOnAnyMaterial) {
+    Scene s = load_json(R"({"materials": {"a": {"type": "dielectric", "bump_map": -0.25},
+                                          "b": {"type": "diffuse"}}})");
+    ASSERT_TRUE(s.materials[0].surface.bump_map);
+    EXPECT_EQ(s.materials[0].surface.bump_map->value, -0.25f);
+    EXPECT_TRUE(s.materials[0].needs_shading_geometry);
+    EXPECT_FALSE(s.materials[1].surface.bump_map);
+    SceneError both = load_error(R"({"materials": {"a": {"type": "diffuse", "normal_map": 0.5, "bump_map": 1}}})");
+    EXPECT_EQ(both.where().json_pointer, "/materials/a/bump_map");
+    EXPECT_EQ(both.message(), "give \"normal_map\" or \"bump_map\", not both");
+}
+
+TEST(SceneLoaderMaterials, AlphaIsReadOnAnyMaterial) {
+    Scene s = load_json(R"({"materials": {"a": {"type": "diffuse", "alpha": 0.25},
+                                          "b": {"type": "transmission", "alpha": 0},
+                                          "c": {"type": "mirror"}}})");
+    EXPECT_EQ(s.materials[0].surface.alpha.value, 0.25f);
+    EXPECT_TRUE(s.materials[0].surface.cuts_out());
+    EXPECT_EQ(s.materials[1].surface.alpha.value, 0.0f);
+    EXPECT_EQ(s.materials[2].surface.alpha.value, 1.0f);
+    EXPECT_FALSE(s.materials[2].surface.cuts_out());
+    // Alpha does not touch the shading frame.
+    EXPECT_FALSE(s.materials[0].needs_shading_geometry);
+    EXPECT_EQ(load_error(R"({"materials": {"a": {"type": "diffuse", "alpha": -0.1}}})").message(),
+              "expected a number in [0, 1], got -0.1");
 }
 
 // ---- shapes: common keys

@@ -79,7 +79,7 @@ SurfaceParams read_surface(JsonCursor& c, Scene& scene) {
                                       : NormalMapConvention::kOpenGl;
     }
     if (auto v = c.get("bump_map")) {
-        if (normal_map) v->fail("a material takes a normal_map or a bump_map, not both");
+        if (normal_map) v->fail("give \"normal_map\" or \"bump_map\", not both");
         s.bump_map = read_float_param(*v, scene, Bounds{});
     }
     if (auto v = c.get("alpha")) s.alpha = read_float_param(*v, scene, Bounds::closed(0, 1));
