@@ -22,8 +22,7 @@ namespace candela {
 // ask the accelerator for the surface's parametrization (render/shading_frame.h).
 struct PathVertex {
     const SurfaceHit& hit;
-    std::optional<ShadingGeometry> geometry;  // engaged only when the material needs it
-    std::optional<Bsdf> textured_bsdf;        // engaged only for textured materials
+    std::optional<Bsdf> textured_bsdf;  // engaged only for textured materials
     const Bsdf& bsdf;
     Frame frame;  // z = shading normal, on the geometric normal's side
     Vec3f wo;     // towards where the path came from, local
@@ -32,18 +31,18 @@ struct PathVertex {
         : PathVertex(scene, accel, h, ray, scene.materials[scene.shapes[h.shape_id].material]) {}
 
   private:
+    // One test of a flag per vertex for materials without maps or anisotropy (the Cornell box's):
+    // no ShadingGeometry is kept here, and a textured, mapped material asks for its uv twice.
     PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, const Material& m)
         : hit(h),
           bsdf(material_bsdf(scene, accel, m)),
-          frame(m.needs_shading_geometry ? shading_frame(m, scene.textures, *geometry, h) : Frame::from_normal(h.ns)),
+          frame(m.needs_shading_geometry ? shading_frame(m, scene.textures, accel.shading(h), h)
+                                         : Frame::from_normal(h.ns)),
           wo(frame.to_local(-ray.d)) {}
 
     const Bsdf& material_bsdf(const Scene& scene, const Accelerator& accel, const Material& m) {
-        if (m.needs_shading_geometry) [[unlikely]]
-            geometry.emplace(accel.shading(hit));
         if (!m.textured) return m.bsdf;
-        const Vec2f uv = geometry ? geometry->uv : accel.uv(hit);
-        return textured_bsdf.emplace(build_bsdf(m, scene.textures, TextureContext{uv, hit.p}));
+        return textured_bsdf.emplace(build_bsdf(m, scene.textures, TextureContext{accel.uv(hit), hit.p}));
     }
 };
 
