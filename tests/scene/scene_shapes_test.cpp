@@ -223,6 +223,11 @@ TEST(SceneLoaderMaterials, AlphaIsReadOnAnyMaterial) {
     EXPECT_FALSE(s.materials[2].surface.cuts_out());
     // Alpha does not touch the shading frame.
     EXPECT_FALSE(s.materials[0].needs_shading_geometry);
+    // Emitters cannot be cut out (light sampling would see the whole surface).
+    SceneError light = load_error(R"({"materials": {"leaf": {"type": "diffuse", "alpha": 0.5}},
+        "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "leaf", "emission": 1}]})");
+    EXPECT_EQ(light.where().json_pointer, "/shapes/0/emission");
+    EXPECT_EQ(light.message(), "a light cannot be cut out: its material \"leaf\" has alpha < 1");
     EXPECT_EQ(load_error(R"({"materials": {"a": {"type": "diffuse", "alpha": -0.1}}})").message(),
               "expected a number in [0, 1], got -0.1");
 }

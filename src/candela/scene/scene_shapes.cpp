@@ -118,6 +118,11 @@ void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene,
             add_warning(scene, *v,
                         "emission 0: the shape is not a light (leave the key out for a shape that "
                         "does not emit)");
+        // Light sampling would count the whole surface while rays pass through its cut-out
+        // parts: the two estimates of its light would disagree.
+        else if (scene.materials[shape.material].surface.cuts_out())
+            v->fail(fmt::format("a light cannot be cut out: its material {} has alpha < 1",
+                                json_quoted(scene.material_names[shape.material])));
     }
     if (auto v = c.get("two_sided")) shape.two_sided = v->boolean();
     bool reverse_orientation = false;
