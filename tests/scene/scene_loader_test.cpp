@@ -240,6 +240,9 @@ TEST(SceneLoader, LoadsEverySectionFromAFile) {
     EXPECT_EQ(s.texture_names, (std::vector<std::string>{"picture", "checks", "", "worn", "dim"}));
     EXPECT_EQ(s.texture_files.size(), 1u);
     EXPECT_TRUE(s.materials[1].textured);
+    EXPECT_EQ(s.materials[0].surface.normal_map_convention, NormalMapConvention::kDirectX);
+    EXPECT_TRUE(s.materials[1].surface.bump_map);
+    EXPECT_TRUE(s.materials[2].surface.alpha.is_textured());
     ASSERT_EQ(s.shapes.size(), 3u);
     EXPECT_EQ(s.meshes.size(), 2u);
     EXPECT_EQ(s.spheres.size(), 1u);
