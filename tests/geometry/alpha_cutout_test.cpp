@@ -88,6 +88,34 @@ TEST(AlphaCutout, OpaqueShapesAndAlphaOneAreUnchanged) {
     EXPECT_FALSE(AlphaCutouts{}.cuts(0));
 }
 
+// A textured alpha: a checkerboard of alpha 1 (color0) and 0 (color1) cells on the front
+// quad, whose uv is ((x + 10) / 20, (y + 10) / 20): with uv_scale 40, cells of 1/2 in x and y.
+TEST(AlphaCutout, TexturedAlphaCutsWhereTheTextureIsZero) {
+    CutoutScene plain(1.0f);
+    TextureSet textures;
+    CheckerboardTexture checks;
+    checks.color0 = ColorParam{Color(1.0f)};
+    checks.color1 = ColorParam{Color(0.0f)};
+    checks.uv.scale = Vec2f(40.0f, 40.0f);
+    AlphaCutouts cutouts;
+    cutouts.shape_alpha = {FloatParam{1.0f, textures.add(checks), 0.0f, 1.0f}, FloatParam{1.0f}, FloatParam{1.0f}};
+    cutouts.textures = &textures;
+    Accelerator accel(plain.meshes, plain.spheres, plain.shapes, cutouts);
+    for (int i = 0; i < 8; ++i) {
+        for (int j = 0; j < 8; ++j) {
+            // The centre of cell (i, j): s = 2 x + 20 = 16.5 + i, t = 16.5 + j, so
+            // floor(s) + floor(t) is even (color0, opaque) when i + j is.
+            const Vec3f o(-2.0f + 0.5f * float(i) + 0.25f, -2.0f + 0.5f * float(j) + 0.25f, 0.0f);
+            const Ray r{o, Vec3f(0, 0, 1)};
+            auto hit = accel.intersect(r);
+            ASSERT_TRUE(hit);
+            const bool opaque = (i + j) % 2 == 0;
+            EXPECT_EQ(hit->shape_id, opaque ? 0u : 1u) << i << ", " << j;
+            EXPECT_EQ(accel.occluded(Ray{r.o, r.d, 0.0f, 1.5f}), opaque);
+        }
+    }
+}
+
 // The fraction of n rays that stop at a surface of alpha 1/2 is binomial: mean 1/2, variance
 // 1 / (4 n). For the sphere, a ray passing the near side meets the far one: it stops at the near
 // side with probability 1/2, at the far side with 1/4, and passes with 1/4.

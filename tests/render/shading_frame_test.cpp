@@ -17,7 +17,7 @@ void expect_near(const Vec3f& a, const Vec3f& b, float tol) {
     EXPECT_NEAR(a.z, b.z, tol);
 }
 
-// A hit on the plane z = 0, front +z, with the given derivatives.
+// A hit on the plane z = 0 at uv (0.3, 0.2), front +z, with the given derivatives.
 struct PlaneHit {
     SurfaceHit hit;
     ShadingGeometry g;
@@ -115,6 +115,55 @@ TEST(ShadingFrame, BumpMapOfALinearRampTiltsByItsSlope) {
     PlaneHit p;
     expect_near(apply_bump_map(p.hit.ns, p.g, p.hit.p, [](const Vec2f&, const Vec3f&) { return 0.7f; }),
                 Vec3f(0, 0, 1), 1e-6f);
+}
+
+// A 1-texel float image of colour c (any uv reads c) and a 2x1 grey one of values 0 and 1 (with
+// clamp, bilinear lookups rise linearly from 0 at u = 1/4 to 1 at u = 3/4).
+TextureImage one_texel(Vec3f c) {
+    TextureImage image;
+    image.width = image.height = 1;
+    image.channels = 3;
+    image.floats = {c.x, c.y, c.z};
+    return image;
+}
+TextureImage ramp() {
+    TextureImage image;
+    image.width = 2;
+    image.height = 1;
+    image.channels = 1;
+    image.floats = {0.0f, 1.0f};
+    return image;
+}
+
+TEST(ShadingFrame, NormalMapImageTiltsTheNormal) {
+    const float a = 0.3f;
+    TextureSet textures;
+    ImageTexture t;
+    t.image = textures.add_image(one_texel(encode(Vec3f(std::sin(a), 0.0f, std::cos(a)))));
+    Material m = make_diffuse(Rgb(0.5f));
+    SurfaceParams s;
+    s.normal_map = ColorParam{Color(1.0f), textures.add(t), 0.0f, 1.0f};
+    set_surface(m, s);
+    PlaneHit p;
+    expect_near(shading_frame(m, textures, p.g, p.hit).n, Vec3f(std::sin(a), 0, std::cos(a)), 1e-6f);
+}
+
+TEST(ShadingFrame, BumpMapOfAnImageRampTiltsByItsSlope) {
+    // Height k (u - 1/4) (the ramp, 2 (u - 1/4), scaled by k / 2) on a plane with |dpdu| = 1:
+    // slope k, a tilt of atan(k) away from dpdu.
+    const float k = 0.05f;
+    TextureSet textures;
+    ImageTexture t;
+    t.image = textures.add_image(ramp());
+    t.wrap = TextureWrap::kClamp;
+    t.scale = 0.5f * k;
+    Material m = make_diffuse(Rgb(0.5f));
+    SurfaceParams s;
+    s.bump_map = FloatParam{0.0f, textures.add(t)};
+    set_surface(m, s);
+    PlaneHit p;  // u = 0.3 is on the ramp
+    const float angle = std::atan(k);
+    expect_near(shading_frame(m, textures, p.g, p.hit).n, Vec3f(-std::sin(angle), 0, std::cos(angle)), 1e-4f);
 }
 
 TEST(ShadingFrame, AnisotropicFrameFollowsDpdu) {

@@ -184,6 +184,24 @@ TEST(SceneLoaderMaterials, NormalMapIsReadOnAnyMaterial) {
     EXPECT_EQ(s.materials[2].surface.normal_map->value, Rgb(0.75f));
     EXPECT_FALSE(s.materials[3].surface.normal_map);
     EXPECT_FALSE(s.materials[3].needs_shading_geometry);
+    // A file name is an image texture of it, read linearly (data, not colour); the same file as
+    // an sRGB albedo is a second image.
+    Scene files = load_json(R"({"textures": {"n": {"type": "image", "file": "textures/rgb_2x2.png",
+                                                   "colorspace": "linear"}},
+                                "materials": {"a": {"type": "diffuse", "normal_map": "textures/rgb_2x2.png",
+                                                    "albedo": {"type": "image", "file": "textures/rgb_2x2.png"}},
+                                              "b": {"type": "diffuse", "normal_map": {"texture": "n"}}}})");
+    ASSERT_TRUE(files.materials[0].surface.normal_map);
+    EXPECT_TRUE(files.materials[0].surface.normal_map->is_textured());
+    EXPECT_TRUE(std::holds_alternative<ImageTexture>(files.textures.texture(files.materials[0].surface.normal_map->texture)));
+    ASSERT_EQ(files.texture_files.size(), 2u);
+    EXPECT_EQ(files.texture_files[0].colorspace, TextureColorspace::kLinear);
+    EXPECT_EQ(files.texture_files[1].colorspace, TextureColorspace::kSrgb);
+    EXPECT_EQ(files.materials[1].surface.normal_map->texture, 0u);  // "n", the linear file again
+    EXPECT_EQ(load_error(R"({"materials": {"a": {"type": "diffuse", "normal_map": "meshes/triangle.obj"}}})")
+                  .where()
+                  .json_pointer,
+              "/materials/a/normal_map");
     SceneError alone = load_error(R"({"materials": {"a": {"type": "diffuse", "normal_map_convention": "opengl"}}})");
     EXPECT_EQ(alone.where().json_pointer, "/materials/a/normal_map_convention");
     EXPECT_EQ(alone.message(), "normal_map_convention needs a normal_map");

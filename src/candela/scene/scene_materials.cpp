@@ -66,12 +66,13 @@ Material read_mix(JsonCursor& c, Scene& scene) {
     return make_material(params);
 }
 
-// The keys every material takes (a mix's, not its parts'): normal_map (a colour texture; a
-// constant tilts the normal the same way everywhere), normal_map_convention, bump_map, alpha.
+// The keys every material takes (a mix's, not its parts'): normal_map (an image file, a colour
+// texture, or a constant that tilts the normal the same way everywhere), normal_map_convention,
+// bump_map, alpha.
 SurfaceParams read_surface(JsonCursor& c, Scene& scene) {
     SurfaceParams s;
     std::optional<JsonCursor> normal_map = c.get("normal_map");
-    if (normal_map) s.normal_map = read_color_param(*normal_map, scene, Bounds::closed(0, 1));
+    if (normal_map) s.normal_map = read_normal_map_param(*normal_map, scene);
     if (auto v = c.get("normal_map_convention")) {
         if (!normal_map) v->fail("normal_map_convention needs a normal_map");
         s.normal_map_convention = v->choice("normal map convention", kNormalMapConventions) == "directx"

@@ -38,6 +38,10 @@ ColorParam read_color_param(const JsonCursor& c, Scene& scene, const Bounds& bou
 // a number (textures/texture_kinds.h).
 FloatParam read_float_param(const JsonCursor& c, Scene& scene, const Bounds& bounds);
 
+// A material's `normal_map`: a file name (an image texture of it, read linearly, repeating), or
+// a colour parameter in [0, 1] as read_color_param reads it.
+ColorParam read_normal_map_param(const JsonCursor& c, Scene& scene);
+
 // `shapes`: meshes (loaded relative to `folder`, each charged to `budget` before it is built),
 // quads and spheres; needs the materials.
 void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene,

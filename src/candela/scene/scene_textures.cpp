@@ -66,6 +66,18 @@ class TextureReader {
         return FloatParam{placeholder(lo, hi), texture_of(c), lo, hi};
     }
 
+    // A normal map: a file name is an image texture of that file, read linearly (a normal map
+    // is data, not colour), repeating and bilinear, as pbrt-v4's `normalmap`; anything else is a
+    // colour parameter in [0, 1].
+    ColorParam normal_map_param(JsonCursor c) {
+        if (!c.is_string()) return color_param(std::move(c), Bounds::closed(0, 1));
+        ImageTexture t;
+        t.image = image_index(c, std::nullopt, TextureColorspace::kLinear);
+        const uint32_t index = scene_.textures.add(t);
+        scene_.texture_names.emplace_back();
+        return ColorParam{Color(1.0f), index, 0.0f, 1.0f};
+    }
+
   private:
     struct Named {
         std::string name;
@@ -198,15 +210,17 @@ class TextureReader {
     }
 
     // The index in scene.textures' images of the file `file` names in `colorspace` (default
-    // srgb; float formats are linear), listing it in scene.texture_files when new.
-    uint32_t image_index(const JsonCursor& file, const std::optional<JsonCursor>& colorspace_key) {
+    // `fallback`; float formats are linear), listing it in scene.texture_files when new.
+    uint32_t image_index(const JsonCursor& file, const std::optional<JsonCursor>& colorspace_key,
+                         TextureColorspace fallback = TextureColorspace::kSrgb) {
         const fs::path path = referenced_file(file, scene_.file.parent_path(), "texture image");
         if (!is_texture_file_extension(path))
             file.fail(fmt::format("expected an image file ({}), got {}", texture_file_extensions(),
                                   json_quoted(file.string())));
-        TextureColorspace colorspace = TextureColorspace::kSrgb;
-        if (colorspace_key && colorspace_key->choice("colorspace", kColorspaceNames) == "linear")
-            colorspace = TextureColorspace::kLinear;
+        TextureColorspace colorspace = fallback;
+        if (colorspace_key)
+            colorspace = colorspace_key->choice("colorspace", kColorspaceNames) == "linear" ? TextureColorspace::kLinear
+                                                                                         : TextureColorspace::kSrgb;
         if (is_float_texture_file(path)) {
             if (colorspace_key && colorspace == TextureColorspace::kSrgb)
                 colorspace_key->fail(fmt::format("{} holds linear values; \"srgb\" applies only to "
@@ -248,6 +262,8 @@ ColorParam read_color_param(const JsonCursor& c, Scene& scene, const Bounds& bou
 FloatParam read_float_param(const JsonCursor& c, Scene& scene, const Bounds& bounds) {
     return TextureReader(scene).float_param(c, bounds);
 }
+
+ColorParam read_normal_map_param(const JsonCursor& c, Scene& scene) { return TextureReader(scene).normal_map_param(c); }
 
 void load_texture_images(Scene& scene, const JsonDocument& document, MemoryBudget& budget) {
     for (size_t i = 0; i < scene.texture_files.size(); ++i) {
