@@ -179,11 +179,13 @@ TEST(SceneLoaderMaterials, NormalMapIsReadOnAnyMaterial) {
     EXPECT_EQ(s.materials[0].surface.normal_map->value, Rgb(0.6f, 0.5f, 0.9f));
     EXPECT_EQ(s.materials[0].surface.normal_map_convention, NormalMapConvention::kOpenGl);
     EXPECT_TRUE(s.materials[0].needs_shading_geometry);
+    EXPECT_TRUE(s.materials[0].per_hit);
     EXPECT_EQ(s.materials[1].surface.normal_map_convention, NormalMapConvention::kDirectX);
     ASSERT_TRUE(s.materials[2].surface.normal_map);
     EXPECT_EQ(s.materials[2].surface.normal_map->value, Rgb(0.75f));
     EXPECT_FALSE(s.materials[3].surface.normal_map);
     EXPECT_FALSE(s.materials[3].needs_shading_geometry);
+    EXPECT_FALSE(s.materials[3].per_hit);
     // A file name is an image texture of it, read linearly (data, not colour); the same file as
     // an sRGB albedo is a second image.
     Scene files = load_json(R"({"textures": {"n": {"type": "image", "file": "textures/rgb_2x2.png",
@@ -241,6 +243,7 @@ TEST(SceneLoaderMaterials, AlphaIsReadOnAnyMaterial) {
     EXPECT_FALSE(s.materials[2].surface.cuts_out());
     // Alpha does not touch the shading frame.
     EXPECT_FALSE(s.materials[0].needs_shading_geometry);
+    EXPECT_FALSE(s.materials[0].per_hit);
     // Emitters cannot be cut out (light sampling would see the whole surface).
     SceneError light = load_error(R"({"materials": {"leaf": {"type": "diffuse", "alpha": 0.5}},
         "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "leaf", "emission": 1}]})");

@@ -24,6 +24,8 @@ struct Material {
     // The shading frame needs the surface's parametrization (render/shading_frame.h): some lobe
     // is anisotropic, or `surface` maps the normal. Kept by set_surface and make_material.
     bool needs_shading_geometry = false;
+    // textured || needs_shading_geometry: the one flag the path tracer tests at every vertex.
+    bool per_hit = false;
     bool anisotropic = false;  // some lobe's x axis must follow the surface's dpdu
     SurfaceParams surface;     // normal or bump map, alpha
 };
@@ -32,6 +34,7 @@ struct Material {
 inline void set_surface(Material& m, const SurfaceParams& s) {
     m.surface = s;
     m.needs_shading_geometry = m.anisotropic || s.perturbs_normal();
+    m.per_hit = m.textured || m.needs_shading_geometry;
 }
 
 // Whether lobe parameters `p` describe an anisotropic lobe: a lobe type says so by an
@@ -68,6 +71,7 @@ inline Material make_material(std::span<const LobeParams> parts) {
         m.anisotropic = m.anisotropic || visit([](const auto& q) { return lobe_is_anisotropic(q); }, p);
     }
     m.needs_shading_geometry = m.anisotropic;
+    m.per_hit = m.textured || m.needs_shading_geometry;
     return m;
 }
 

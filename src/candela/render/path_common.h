@@ -31,18 +31,25 @@ struct PathVertex {
         : PathVertex(scene, accel, h, ray, scene.materials[scene.shapes[h.shape_id].material]) {}
 
   private:
-    // One test of a flag per vertex for materials without maps or anisotropy (the Cornell box's):
-    // no ShadingGeometry is kept here, and a textured, mapped material asks for its uv twice.
+    // One flag per vertex for materials without textures, maps or anisotropy (the Cornell box's):
+    // Material::per_hit, tested twice, which the compiler merges on the plain path (+0.07%
+    // instructions in the path loop, where testing textured and needs_shading_geometry cost
+    // +0.8%: docs/ARCHITECTURE.md). A textured, mapped material asks for its uv twice.
     PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, const Material& m)
         : hit(h),
-          bsdf(material_bsdf(scene, accel, m)),
-          frame(m.needs_shading_geometry ? shading_frame(m, scene.textures, accel.shading(h), h)
-                                         : Frame::from_normal(h.ns)),
+          bsdf(m.per_hit ? per_hit_bsdf(scene, accel, m) : m.bsdf),
+          frame(m.per_hit ? per_hit_frame(scene, accel, m, h) : Frame::from_normal(h.ns)),
           wo(frame.to_local(-ray.d)) {}
 
-    const Bsdf& material_bsdf(const Scene& scene, const Accelerator& accel, const Material& m) {
+    const Bsdf& per_hit_bsdf(const Scene& scene, const Accelerator& accel, const Material& m) {
         if (!m.textured) return m.bsdf;
         return textured_bsdf.emplace(build_bsdf(m, scene.textures, TextureContext{accel.uv(hit), hit.p}));
+    }
+    // Out of line, so that the maps' code stays out of the integrators' loops.
+    [[gnu::noinline]] static Frame per_hit_frame(const Scene& scene, const Accelerator& accel, const Material& m,
+                                                 const SurfaceHit& h) {
+        if (!m.needs_shading_geometry) return Frame::from_normal(h.ns);
+        return shading_frame(m, scene.textures, accel.shading(h), h);
     }
 };
 
