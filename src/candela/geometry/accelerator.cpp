@@ -12,6 +12,7 @@
 
 #include "candela/core/check.h"
 #include "candela/core/error.h"
+#include "candela/geometry/disk_intersection.h"
 #include "candela/geometry/ray_offset.h"
 #include "candela/geometry/sphere_intersection.h"
 #include "candela/math/constants.h"
@@ -53,22 +54,27 @@ std::optional<double> intersect_embree_ray(const Sphere& s, const RTCRay& r) {
                             double(r.tnear), double(r.tfar));
 }
 
+// A user geometry's hit at ray parameter t, written into Embree's record. The record is rebuilt
+// from the ray afterwards (make_sphere_hit, make_disk_hit), so only t and the ids matter.
+void write_user_hit(const RTCIntersectFunctionNArguments* args, RTCRayHit* rh, double t) {
+    // The stored t may round up past tfar; hits must never move tfar outwards.
+    float tf = std::min(float(t), rh->ray.tfar);
+    rh->ray.tfar = tf;
+    rh->hit.geomID = args->geomID;
+    rh->hit.primID = args->primID;
+    rh->hit.instID[0] = args->context->instID[0];
+    rh->hit.u = 0.0f;
+    rh->hit.v = 0.0f;
+    rh->hit.Ng_x = rh->hit.Ng_y = rh->hit.Ng_z = 0.0f;
+}
+
 void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     // candela only traces single rays (rtcIntersect1), so N is 1.
     if (!args->valid[0]) return;
     auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
     const auto& s = *static_cast<const Sphere*>(args->geometryUserPtr);
     std::optional<double> t = intersect_embree_ray(s, rh->ray);
-    if (!t) return;
-    // The stored t may round up past tfar; hits must never move tfar outwards.
-    float tf = std::min(float(*t), rh->ray.tfar);
-    rh->ray.tfar = tf;
-    rh->hit.geomID = args->geomID;
-    rh->hit.primID = args->primID;
-    rh->hit.instID[0] = args->context->instID[0];
-    rh->hit.u = 0.0f;  // the hit record is rebuilt from the ray in make_sphere_hit
-    rh->hit.v = 0.0f;
-    rh->hit.Ng_x = rh->hit.Ng_y = rh->hit.Ng_z = 0.0f;
+    if (t) write_user_hit(args, rh, *t);
 }
 
 void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
@@ -76,6 +82,44 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     auto* r = reinterpret_cast<RTCRay*>(args->ray);
     const auto& s = *static_cast<const Sphere*>(args->geometryUserPtr);
     if (intersect_embree_ray(s, *r)) r->tfar = -kInfinity;  // Embree's mark for "occluded"
+}
+
+// The same for disks; the user pointer is the Disk.
+void write_disk_bounds(const Disk& d, RTCBounds* b) {
+    // Along each axis, center + x u_i + y v_i over the unit disk reaches center_i +- |(u_i, v_i)|;
+    // rounded outwards so that the float bounds contain the double disk.
+    const Vec3d half(std::hypot(d.axis_u.x, d.axis_v.x), std::hypot(d.axis_u.y, d.axis_v.y),
+                     std::hypot(d.axis_u.z, d.axis_v.z));
+    auto lo = [](double v) { return std::nextafter(float(v), -kInfinity); };
+    auto hi = [](double v) { return std::nextafter(float(v), kInfinity); };
+    b->lower_x = lo(d.center.x - half.x);
+    b->lower_y = lo(d.center.y - half.y);
+    b->lower_z = lo(d.center.z - half.z);
+    b->upper_x = hi(d.center.x + half.x);
+    b->upper_y = hi(d.center.y + half.y);
+    b->upper_z = hi(d.center.z + half.z);
+}
+
+void disk_bounds(const RTCBoundsFunctionArguments* args) {
+    write_disk_bounds(*static_cast<const Disk*>(args->geometryUserPtr), args->bounds_o);
+}
+
+std::optional<double> intersect_embree_ray(const Disk& d, const RTCRay& r) {
+    return intersect_disk(d, Vec3d(r.org_x, r.org_y, r.org_z), Vec3d(r.dir_x, r.dir_y, r.dir_z), double(r.tnear),
+                          double(r.tfar));
+}
+
+void disk_intersect(const RTCIntersectFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
+    std::optional<double> t = intersect_embree_ray(*static_cast<const Disk*>(args->geometryUserPtr), rh->ray);
+    if (t) write_user_hit(args, rh, *t);
+}
+
+void disk_occluded(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* r = reinterpret_cast<RTCRay*>(args->ray);
+    if (intersect_embree_ray(*static_cast<const Disk*>(args->geometryUserPtr), *r)) r->tfar = -kInfinity;
 }
 
 // The uv of a point at barycentrics b of triangle `tri`: Accelerator::uv's rule, which the alpha
@@ -92,6 +136,7 @@ Vec2f mesh_uv(const TriangleMesh& mesh, uint32_t tri, const Vec2f& b) {
 struct CutoutShape {
     const TriangleMesh* mesh = nullptr;
     const Sphere* sphere = nullptr;
+    const Disk* disk = nullptr;
     FloatParam alpha;
     const TextureSet* textures = nullptr;
     uint32_t id = 0;  // the Embree geometry id = shape id, hashed with the primitive
@@ -148,20 +193,41 @@ void cutout_sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
     std::optional<double> t = intersect_cutout_sphere(*static_cast<const CutoutShape*>(args->geometryUserPtr), rh->ray);
-    if (!t) return;
-    rh->ray.tfar = std::min(float(*t), rh->ray.tfar);  // as sphere_intersect
-    rh->hit.geomID = args->geomID;
-    rh->hit.primID = args->primID;
-    rh->hit.instID[0] = args->context->instID[0];
-    rh->hit.u = 0.0f;
-    rh->hit.v = 0.0f;
-    rh->hit.Ng_x = rh->hit.Ng_y = rh->hit.Ng_z = 0.0f;
+    if (t) write_user_hit(args, rh, *t);
 }
 
 void cutout_sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* r = reinterpret_cast<RTCRay*>(args->ray);
     if (intersect_cutout_sphere(*static_cast<const CutoutShape*>(args->geometryUserPtr), *r)) r->tfar = -kInfinity;
+}
+
+// The crossing of a cut-out disk, if the ray stops there (a disk is crossed once: primitive 0).
+std::optional<double> intersect_cutout_disk(const CutoutShape& c, const RTCRay& r) {
+    const Disk& d = *c.disk;
+    const Vec3f o(r.org_x, r.org_y, r.org_z), dir(r.dir_x, r.dir_y, r.dir_z);
+    std::optional<double> t = intersect_disk(d, Vec3d(o), Vec3d(dir), double(r.tnear), double(r.tfar));
+    if (!t) return t;
+    Vec3d p = project_to_disk_plane(d, Vec3d(o) + Vec3d(dir) * *t);
+    if (c.stops(o, dir, 0, disk_uv(d, p), Vec3f(p))) return t;
+    return std::nullopt;
+}
+
+void cutout_disk_bounds(const RTCBoundsFunctionArguments* args) {
+    write_disk_bounds(*static_cast<const CutoutShape*>(args->geometryUserPtr)->disk, args->bounds_o);
+}
+
+void cutout_disk_intersect(const RTCIntersectFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
+    std::optional<double> t = intersect_cutout_disk(*static_cast<const CutoutShape*>(args->geometryUserPtr), rh->ray);
+    if (t) write_user_hit(args, rh, *t);
+}
+
+void cutout_disk_occluded(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* r = reinterpret_cast<RTCRay*>(args->ray);
+    if (intersect_cutout_disk(*static_cast<const CutoutShape*>(args->geometryUserPtr), *r)) r->tfar = -kInfinity;
 }
 
 RTCRay to_embree(const Ray& ray) {
@@ -184,10 +250,12 @@ RTCRay to_embree(const Ray& ray) {
 }  // namespace
 
 struct Accelerator::Impl {
-    // Per Embree geometry id (= shape id), its mesh or its sphere: one load from a hit to its data.
+    // Per Embree geometry id (= shape id), its mesh, sphere or disk (exactly one is set): one
+    // load from a hit to its data.
     struct Geometry {
         const TriangleMesh* mesh = nullptr;
         const Sphere* sphere = nullptr;
+        const Disk* disk = nullptr;
         // A small mesh's winding normals, one per triangle (kMaxTrianglesWithNormalTable); empty
         // for larger meshes, whose hits normalize the cross product themselves.
         std::vector<Vec3f> face_normals;
@@ -239,6 +307,23 @@ struct Accelerator::Impl {
             rtcSetGeometryBoundsFunction(g, sphere_bounds, nullptr);
             rtcSetGeometryIntersectFunction(g, sphere_intersect);
             rtcSetGeometryOccludedFunction(g, sphere_occluded);
+        }
+        commit_and_attach(g, id);
+    }
+
+    void attach_disk(const Disk& disk, unsigned id, const CutoutShape* cutout) {
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(g, 1);
+        if (cutout) {
+            rtcSetGeometryUserData(g, const_cast<CutoutShape*>(cutout));
+            rtcSetGeometryBoundsFunction(g, cutout_disk_bounds, nullptr);
+            rtcSetGeometryIntersectFunction(g, cutout_disk_intersect);
+            rtcSetGeometryOccludedFunction(g, cutout_disk_occluded);
+        } else {
+            rtcSetGeometryUserData(g, const_cast<Disk*>(&disk));
+            rtcSetGeometryBoundsFunction(g, disk_bounds, nullptr);
+            rtcSetGeometryIntersectFunction(g, disk_intersect);
+            rtcSetGeometryOccludedFunction(g, disk_occluded);
         }
         commit_and_attach(g, id);
     }
@@ -302,20 +387,51 @@ struct Accelerator::Impl {
         h.ns = ng;
         h.b = Vec2f(0.0f, 0.0f);
     }
+
+    static void make_disk_hit(const RTCRayHit& rh, const Ray& ray, const Disk& d, SurfaceHit& h) {
+        h.t = rh.ray.tfar;
+        h.shape_id = rh.hit.geomID;
+        h.prim_id = 0;
+        // Moved onto the plane in double, as sphere hits are projected onto the sphere: rounding
+        // to float then dominates the error, and gamma(5) |p| bounds it as for spheres.
+        h.p = Vec3f(project_to_disk_plane(d, Vec3d(ray.o) + Vec3d(ray.d) * double(h.t)));
+        h.p_error = Vec3f(max_component(abs(h.p)) * rounding_gamma(5));
+        Vec3f ng = Vec3f(d.normal);
+        h.ng = ng;
+        h.ns = ng;
+        h.b = Vec2f(0.0f, 0.0f);
+    }
+
+    // A hit on user geometry (a sphere or a disk), off the triangles' path.
+    static void make_user_hit(const RTCRayHit& rh, const Ray& ray, const Geometry& g, SurfaceHit& h) {
+        if (g.sphere)
+            make_sphere_hit(rh, ray, *g.sphere, h);
+        else
+            make_disk_hit(rh, ray, *g.disk, h);
+    }
 };
 
 Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
-                         std::span<const Shape> shapes, AlphaCutouts cutouts)
+                         std::span<const Disk> disks, std::span<const Shape> shapes, AlphaCutouts cutouts)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.geometries.resize(shapes.size());
     for (size_t id = 0; id < shapes.size(); ++id) {
-        if (shapes[id].kind == ShapeKind::kMesh) {
-            const TriangleMesh& mesh = meshes[shapes[id].index];
-            m.geometries[id].mesh = &mesh;
-            if (mesh.triangle_count() <= kMaxTrianglesWithNormalTable) m.geometries[id].face_normals = winding_normals(mesh);
-        } else {
-            m.geometries[id].sphere = &spheres[shapes[id].index];
+        const uint32_t index = shapes[id].index;
+        // A disk shape given to the constructor without disks would read past the span.
+        CANDELA_CHECK(index < (shapes[id].kind == ShapeKind::kMesh     ? meshes.size()
+                               : shapes[id].kind == ShapeKind::kSphere ? spheres.size()
+                                                                       : disks.size()));
+        switch (shapes[id].kind) {
+            case ShapeKind::kMesh: {
+                const TriangleMesh& mesh = meshes[index];
+                m.geometries[id].mesh = &mesh;
+                if (mesh.triangle_count() <= kMaxTrianglesWithNormalTable)
+                    m.geometries[id].face_normals = winding_normals(mesh);
+                break;
+            }
+            case ShapeKind::kSphere: m.geometries[id].sphere = &spheres[index]; break;
+            case ShapeKind::kDisk: m.geometries[id].disk = &disks[index]; break;
         }
     }
     m.device = rtcNewDevice(nullptr);
@@ -326,18 +442,19 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
     rtcSetSceneBuildQuality(m.scene, RTC_BUILD_QUALITY_HIGH);
     m.cutouts.reserve(shapes.size());
     for (unsigned id = 0; id < shapes.size(); ++id) {
-        const Shape& shape = shapes[id];
+        const Impl::Geometry& g = m.geometries[id];
         const CutoutShape* cutout = nullptr;
         if (cutouts.cuts(id)) {
             const FloatParam& alpha = cutouts.shape_alpha[id];
             CANDELA_CHECK(!alpha.is_textured() || cutouts.textures);
-            cutout = &m.cutouts.emplace_back(CutoutShape{m.geometries[id].mesh, m.geometries[id].sphere, alpha,
-                                                         cutouts.textures, id});
+            cutout = &m.cutouts.emplace_back(CutoutShape{g.mesh, g.sphere, g.disk, alpha, cutouts.textures, id});
         }
-        if (shape.kind == ShapeKind::kMesh)
-            m.attach_mesh(meshes[shape.index], id, cutout);
+        if (g.mesh)
+            m.attach_mesh(*g.mesh, id, cutout);
+        else if (g.sphere)
+            m.attach_sphere(*g.sphere, id, cutout);
         else
-            m.attach_sphere(spheres[shape.index], id, cutout);
+            m.attach_disk(*g.disk, id, cutout);
     }
     rtcCommitScene(m.scene);
     check_embree(m.device, "build the scene");
@@ -358,8 +475,9 @@ std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
         o->observe(ray, false, rh.hit.geomID != RTC_INVALID_GEOMETRY_ID);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return result;
     const Impl::Geometry& g = impl_->geometries[rh.hit.geomID];
-    if (g.sphere)
-        Impl::make_sphere_hit(rh, ray, *g.sphere, result.emplace());
+    // One test on the triangles' path, as before disks existed.
+    if (g.mesh == nullptr)
+        Impl::make_user_hit(rh, ray, g, result.emplace());
     else
         Impl::make_triangle_hit(rh, g, result.emplace());
     return result;
@@ -368,6 +486,7 @@ std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
 Vec2f Accelerator::uv(const SurfaceHit& hit) const {
     const Impl::Geometry& g = impl_->geometries[hit.shape_id];
     if (g.sphere) return sphere_uv((Vec3d(hit.p) - g.sphere->center) / g.sphere->radius);
+    if (g.disk) return disk_uv(*g.disk, Vec3d(hit.p));
     return mesh_uv(*g.mesh, hit.prim_id, hit.b);
 }
 
@@ -377,6 +496,7 @@ ShadingGeometry Accelerator::shading(const SurfaceHit& hit) const {
         const Vec3d v = Vec3d(hit.p) - g.sphere->center;
         return sphere_shading_geometry(v / length(v), g.sphere->radius, g.sphere->reverse_orientation);
     }
+    if (g.disk) return disk_shading_geometry(*g.disk, Vec3d(hit.p));
     const TriangleMesh& mesh = *g.mesh;
     const uint32_t* v = &mesh.indices[3 * size_t(hit.prim_id)];
     const Vec3f p[3] = {mesh.positions[v[0]], mesh.positions[v[1]], mesh.positions[v[2]]};

@@ -1,13 +1,16 @@
 #pragma once
 // Ray traversal: one Embree 3 scene over all shapes. Triangle meshes are native Embree triangles;
-// spheres are user geometry with candela's precise intersection (sphere_intersection.h). Shape i
+// spheres and disks are user geometry with candela's precise intersection (sphere_intersection.h,
+// disk_intersection.h). Shape i
 // of the scene is Embree geometry i, so hits name the shape directly. Embree stays out of this
 // header so that only accelerator.cpp compiles against it.
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 
 #include "candela/geometry/alpha_cutout.h"
+#include "candela/geometry/disk.h"
 #include "candela/geometry/shading_geometry.h"
 #include "candela/geometry/shape.h"
 #include "candela/geometry/sphere.h"
@@ -47,7 +50,11 @@ class Accelerator {
     // The spans must outlive the accelerator: hits read vertex data from them. Shapes that
     // `cutouts` cuts out let rays through where their alpha says (alpha_cutout.h).
     Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
-                std::span<const Shape> shapes, AlphaCutouts cutouts = {});
+                std::span<const Disk> disks, std::span<const Shape> shapes, AlphaCutouts cutouts = {});
+    // A scene without disks.
+    Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
+                std::span<const Shape> shapes, AlphaCutouts cutouts = {})
+        : Accelerator(meshes, spheres, {}, shapes, std::move(cutouts)) {}
     ~Accelerator();
     Accelerator(const Accelerator&) = delete;
     Accelerator& operator=(const Accelerator&) = delete;
@@ -56,7 +63,8 @@ class Accelerator {
     std::optional<SurfaceHit> intersect(const Ray& ray) const;
     // The surface parameterisation (u, v) at a hit this accelerator returned: the mesh's vertex
     // uvs interpolated (a quad's (s, t)), or the barycentrics (b1, b2) for meshes without uvs; on
-    // spheres pbrt's, u = phi / 2pi, v = 1 - theta / pi about +y (shading_geometry.h).
+    // spheres pbrt's, u = phi / 2pi, v = 1 - theta / pi about +y (shading_geometry.h); on disks
+    // pbrt's, u = phi / 2pi, v = 1 - r / radius (disk.h).
     Vec2f uv(const SurfaceHit& hit) const;
     // The uv and the derivatives of point and shading normal at a hit (shading_geometry.h):
     // for materials with a tangent frame, normal map or bump map only, so computed on request.

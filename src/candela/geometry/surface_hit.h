@@ -14,11 +14,11 @@ struct SurfaceHit {
                        // for a non-degenerate shape
     Vec3f ng;          // unit geometric normal on the shape's front side
     Vec3f ns;          // unit shading normal (interpolated vertex normal, or ng), same side as ng
-    Vec2f b;           // barycentrics (b1, b2) of p in triangle prim_id; (0, 0) on spheres.
-                       // Accelerator::uv turns them into the surface's (u, v) on demand: most
-                       // hits never need it, and a sphere's costs an atan2 and an acos
+    Vec2f b;           // barycentrics (b1, b2) of p in triangle prim_id; (0, 0) on spheres and
+                       // disks. Accelerator::uv turns them into the surface's (u, v) on demand:
+                       // most hits never need it, and a sphere's costs an atan2 and an acos
     uint32_t shape_id = 0;
-    uint32_t prim_id = 0;  // triangle index within the mesh; 0 for spheres
+    uint32_t prim_id = 0;  // triangle index within the mesh; 0 for spheres and disks
 
     // True when the ray came from the front side.
     bool front_face(const Vec3f& ray_dir) const { return dot(ray_dir, ng) < 0.0f; }

@@ -5,6 +5,7 @@
 
 #include "candela/core/platform.h"
 #include "candela/core/variant.h"
+#include "candela/lights/disk_emitter.h"
 #include "candela/lights/mesh_emitter.h"
 #include "candela/lights/sphere_emitter.h"
 #include "candela/math/constants.h"
@@ -12,7 +13,7 @@
 
 namespace candela {
 
-using Emitter = Variant<MeshEmitter, SphereEmitter>;
+using Emitter = Variant<MeshEmitter, SphereEmitter, DiskEmitter>;
 
 struct AreaLight {
     Emitter emitter;

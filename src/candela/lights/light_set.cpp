@@ -4,17 +4,31 @@
 
 namespace candela {
 
-LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
-                   std::span<const Shape> shapes, LightSelection selection,
+namespace {
+
+// The emitter of a shape's geometry.
+Emitter make_emitter(const Shape& shape, std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
+                     std::span<const Disk> disks) {
+    switch (shape.kind) {
+        case ShapeKind::kMesh: return MeshEmitter(meshes[shape.index]);
+        case ShapeKind::kSphere: return SphereEmitter{spheres[shape.index]};
+        case ShapeKind::kDisk: return DiskEmitter(disks[shape.index]);
+    }
+    return SphereEmitter{};
+}
+
+}  // namespace
+
+LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres, std::span<const Disk> disks,
+                   std::span<const Shape> shapes, std::span<const DeltaLight> delta_lights, LightSelection selection,
                    std::optional<EnvironmentLight> environment, float scene_radius)
     : light_of_shape_(shapes.size(), kNoLight), environment_(std::move(environment)) {
     std::vector<float> weights;
     for (size_t id = 0; id < shapes.size(); ++id) {
         const Shape& shape = shapes[id];
         if (shape.emission.is_black()) continue;
-        AreaLight light{shape.kind == ShapeKind::kMesh ? Emitter(MeshEmitter(meshes[shape.index]))
-                                                       : Emitter(SphereEmitter{spheres[shape.index]}),
-                        shape.emission, shape.two_sided, static_cast<uint32_t>(id)};
+        AreaLight light{make_emitter(shape, meshes, spheres, disks), shape.emission, shape.two_sided,
+                        static_cast<uint32_t>(id)};
         float area = visit([](const auto& e) { return e.area(); }, light.emitter);
         if (!(area > 0.0f) || !std::isfinite(area)) continue;
         light_of_shape_[id] = static_cast<uint32_t>(lights_.size());
@@ -27,6 +41,13 @@ LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere>
             weights.push_back(selection == LightSelection::kPower ? power : 1.0f);
         else
             environment_.reset();  // black: nothing to see or sample
+    }
+    delta_begin_ = static_cast<uint32_t>(weights.size());
+    for (const DeltaLight& light : delta_lights) {
+        float power = delta_light_power(light, scene_radius);
+        if (!(power > 0.0f) || !std::isfinite(power)) continue;  // black: it would light nothing
+        weights.push_back(selection == LightSelection::kPower ? power : 1.0f);
+        delta_lights_.push_back(light);
     }
     selection_ = Distribution1D(weights);
     for (size_t i = 0; i < weights.size(); ++i) selection_probability_.push_back(selection_.probability(i));
@@ -47,12 +68,8 @@ CANDELA_HD std::optional<LightSample> LightSet::sample(const Vec3f& ref, float u
     if (selection_.empty()) return result;
     const uint32_t chosen = uses_choice() ? selection_.sample_discrete(uc).index : 0;
     const float probability = selection_probability_[chosen];
-    if (chosen == lights_.size()) {  // the environment
-        std::optional<EnvironmentSample> es = environment_->sample(u);
-        if (!es) return result;
-        float pdf = probability * es->pdf;
-        if (!(pdf > 0.0f) || !std::isfinite(pdf)) return result;
-        result.emplace(LightSample{ref + es->wi, -es->wi, es->wi, true, es->Le, pdf});
+    if (chosen >= lights_.size()) {  // the environment or a delta light
+        sample_beyond_area_lights(ref, chosen, probability, u, result);
         return result;
     }
     const AreaLight& light = lights_[chosen];
@@ -69,6 +86,22 @@ CANDELA_HD std::optional<LightSample> LightSet::sample(const Vec3f& ref, float u
     ls.Le = area_light_radiance(light, es->n, -es->wi);
     ls.pdf = pdf;
     return result;
+}
+
+CANDELA_HD void LightSet::sample_beyond_area_lights(const Vec3f& ref, uint32_t chosen, float probability,
+                                                    const Vec2f& u, std::optional<LightSample>& result) const {
+    if (chosen < delta_begin_) {  // the environment
+        std::optional<EnvironmentSample> es = environment_->sample(u);
+        if (!es) return;
+        float pdf = probability * es->pdf;
+        if (!(pdf > 0.0f) || !std::isfinite(pdf)) return;
+        result.emplace(LightSample{ref + es->wi, -es->wi, es->wi, true, false, es->Le, pdf});
+        return;
+    }
+    std::optional<DeltaLightSample> ds = sample_delta_light(delta_lights_[chosen - delta_begin_], ref);
+    if (!ds || ds->Li.is_black()) return;
+    // The sample is certain given the light: the only density is the selection's.
+    result.emplace(LightSample{ds->p, -ds->wi, ds->wi, ds->infinite, true, ds->Li, probability});
 }
 
 CANDELA_HD float LightSet::pdf(const Vec3f& ref, uint32_t shape_id, const Vec3f& p_light, const Vec3f& n_light) const {

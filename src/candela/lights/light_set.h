@@ -1,10 +1,15 @@
 #pragma once
-// The scene's area lights: every shape with emission. Diffuse emitters: radiance `emission`
-// leaves the front side (the side the geometric normal points to), both sides when two_sided.
-// Selection among lights is proportional to emitted power (or uniform); points are sampled
-// uniformly by area on meshes and quads, and by the cone of directions a sphere subtends when
-// seen from outside (uniformly by area from inside). All pdfs are per unit solid angle at the
-// reference point: area pdf * distance^2 / |cos theta_light|.
+// The scene's lights: every shape with emission (area lights), the environment, and the point,
+// spot and directional lights (delta lights, delta_light_type.h). Diffuse emitters: radiance
+// `emission` leaves the front side (the side the geometric normal points to), both sides when
+// two_sided. Selection among all lights is proportional to emitted power (or uniform); points are
+// sampled uniformly by area on meshes, quads and disks, and by the cone of directions a sphere
+// subtends when seen from outside (uniformly by area from inside). All pdfs are per unit solid
+// angle at the reference point: area pdf * distance^2 / |cos theta_light|. A delta light's sample
+// is certain: its pdf is the probability of selecting the light, and it is marked is_delta.
+//
+// Selection indices: the area lights first, then the environment, then the delta lights, so that
+// the area lights' path through sample() is the same whether a scene has delta lights or not.
 //
 // A shape with emission but zero area (degenerate triangles) cannot be hit or sampled and is not
 // a light. Random numbers: uc picks the light (only read when there are several: uses_choice());
@@ -15,10 +20,12 @@
 #include <vector>
 
 #include "candela/core/platform.h"
+#include "candela/geometry/disk.h"
 #include "candela/geometry/shape.h"
 #include "candela/geometry/sphere.h"
 #include "candela/geometry/triangle_mesh.h"
 #include "candela/lights/area_light.h"
+#include "candela/lights/delta_light.h"
 #include "candela/lights/environment_light.h"
 #include "candela/lights/light_sample.h"
 #include "candela/lights/light_selection.h"
@@ -29,16 +36,24 @@ namespace candela {
 class LightSet {
   public:
     LightSet() = default;
-    // The spans must outlive the set. Shapes with black emission are not lights. The environment,
-    // if any, competes for selection with the area lights, by its power estimate for a scene of
-    // bounding-sphere radius `scene_radius` (EnvironmentLight::power).
+    // The spans of geometry must outlive the set. Shapes with black emission are not lights. The
+    // environment, if any, and the delta lights compete for selection with the area lights, by
+    // their power for a scene of bounding-sphere radius `scene_radius` (EnvironmentLight::power,
+    // DeltaLightType::power); delta lights of zero power are left out.
+    LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres, std::span<const Disk> disks,
+             std::span<const Shape> shapes, std::span<const DeltaLight> delta_lights, LightSelection selection,
+             std::optional<EnvironmentLight> environment, float scene_radius);
+    // Area lights of meshes and spheres, and the environment.
     LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres, std::span<const Shape> shapes,
              LightSelection selection = LightSelection::kPower,
-             std::optional<EnvironmentLight> environment = std::nullopt, float scene_radius = 1.0f);
+             std::optional<EnvironmentLight> environment = std::nullopt, float scene_radius = 1.0f)
+        : LightSet(meshes, spheres, {}, shapes, {}, selection, std::move(environment), scene_radius) {}
 
-    CANDELA_HD bool empty() const { return lights_.empty() && !environment_; }
-    CANDELA_HD size_t size() const { return lights_.size() + (environment_ ? 1 : 0); }
+    CANDELA_HD bool empty() const { return lights_.empty() && !environment_ && delta_lights_.empty(); }
+    CANDELA_HD size_t size() const { return lights_.size() + (environment_ ? 1 : 0) + delta_lights_.size(); }
     CANDELA_HD bool has_environment() const { return environment_.has_value(); }
+    // Whether there are point, spot or directional lights, which only light sampling can find.
+    CANDELA_HD bool has_delta_lights() const { return !delta_lights_.empty(); }
     // Whether sample() reads uc: there is more than one light to choose from.
     CANDELA_HD bool uses_choice() const { return size() > 1; }
 
@@ -49,9 +64,9 @@ class LightSet {
     float environment_pdf(const Vec3f& w) const;
 
     // Samples a light (with uc) and a point on it (with u) as seen from `ref`.
-    // nullopt when nothing can be sampled (no lights, or a zero pdf). A point on the back of a
-    // one-sided light comes back with black Le and its true pdf (a sphere of reverse orientation
-    // seen from outside shows only its back).
+    // nullopt when nothing can be sampled (no lights, a zero pdf, or a delta light that sends
+    // nothing to ref). A point on the back of a one-sided light comes back with black Le and its
+    // true pdf (a sphere of reverse orientation seen from outside shows only its back).
     CANDELA_HD std::optional<LightSample> sample(const Vec3f& ref, float uc, const Vec2f& u) const;
 
     // The pdf per solid angle (selection included) with which sample() from `ref` would have
@@ -69,6 +84,10 @@ class LightSet {
   private:
     static constexpr uint32_t kNoLight = 0xffffffffu;
 
+    // sample() for a selection index past the area lights: the environment or a delta light.
+    CANDELA_HD void sample_beyond_area_lights(const Vec3f& ref, uint32_t chosen, float probability, const Vec2f& u,
+                                              std::optional<LightSample>& result) const;
+
     // The index in lights_ of shape `shape_id`, or kNoLight.
     CANDELA_HD uint32_t light_index(uint32_t shape_id) const {
         return shape_id < light_of_shape_.size() ? light_of_shape_[shape_id] : kNoLight;
@@ -77,7 +96,9 @@ class LightSet {
     std::vector<AreaLight> lights_;
     std::vector<uint32_t> light_of_shape_;  // shape id -> index in lights_, or kNoLight
     std::optional<EnvironmentLight> environment_;
-    Distribution1D selection_;              // over lights_, then the environment (last index)
+    std::vector<DeltaLight> delta_lights_;
+    uint32_t delta_begin_ = 0;              // the selection index of delta_lights_[0]
+    Distribution1D selection_;              // over lights_, then the environment, then delta_lights_
     std::vector<float> selection_probability_;  // selection_.probability(i), computed once: it
                                                 // divides in double, and NEE and MIS ask per vertex
 };

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "candela/core/error.h"
+#include "candela/lights/light_set.h"
 #include "candela/render/debug_integrators.h"
 #include "candela/render/transport_integrators.h"
 #include "candela/scene/scene.h"
@@ -19,7 +21,13 @@ std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Accelerato
     const IntegratorSettings& s = scene.integrator;
     switch (s.type) {
         case IntegratorType::kPath: return std::make_unique<PathIntegrator>(scene, accel, lights);
-        case IntegratorType::kBsdf: return std::make_unique<BsdfIntegrator>(scene, accel, lights);
+        case IntegratorType::kBsdf:
+            // It finds light only by hitting it, and no ray hits a point, spot or directional
+            // light: refused rather than rendered without them (the scene loader and the CLI
+            // refuse such scenes first, with their own messages).
+            if (lights.has_delta_lights())
+                throw RenderError("the bsdf integrator cannot see point, spot or directional lights");
+            return std::make_unique<BsdfIntegrator>(scene, accel, lights);
         case IntegratorType::kWhitted: return std::make_unique<WhittedIntegrator>(scene, accel, lights);
         case IntegratorType::kNormals: return std::make_unique<NormalsIntegrator>(accel);
         case IntegratorType::kDepth: return std::make_unique<DepthIntegrator>(accel, scene.camera.near);

@@ -125,7 +125,9 @@ inline bool survive_russian_roulette(Rgb& beta, float eta_scale, int bounces, co
 }
 
 // One light sample for the vertex, from `n`: f |cos| Le / pdf, weighted by the power heuristic
-// against BSDF sampling when `mis`. Counts its shadow ray. Black for delta-only BSDFs.
+// against BSDF sampling when `mis`, except for a delta light (point, spot, directional), which BSDF
+// sampling cannot find: its weight is 1 (pbrt-v4's PathIntegrator::SampleLd). Counts its shadow
+// ray. Black for delta-only BSDFs.
 inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, const Accelerator& accel, bool mis,
                                const LightNumbers& n, RayCounters& counters) {
     if (v.bsdf.is_delta_only() || lights.empty()) return Rgb(0.0f);
@@ -135,10 +137,11 @@ inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, cons
     Rgb f = v.bsdf.eval(v.wo, wi, TransportMode::kRadiance) * std::abs(wi.z);
     if (f.is_black()) return Rgb(0.0f);
     ++counters.shadow;
-    // Towards the environment the shadow ray runs to infinity; towards a surface it stops short.
+    // Towards the environment or a directional light the shadow ray runs to infinity; towards a
+    // surface or a point light it stops short.
     Ray shadow = ls->infinite ? spawn_ray(v.hit, ls->wi) : spawn_ray_to(v.hit, ls->p);
     if (accel.occluded(shadow)) return Rgb(0.0f);
-    float w = mis ? power_heuristic(ls->pdf, v.bsdf.pdf(v.wo, wi)) : 1.0f;
+    float w = mis && !ls->is_delta ? power_heuristic(ls->pdf, v.bsdf.pdf(v.wo, wi)) : 1.0f;
     return f * ls->Le * (w / ls->pdf);
 }
 

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "candela/camera/camera.h"
 #include "candela/core/error.h"
@@ -122,11 +123,20 @@ LightSet build_light_set(const Scene& scene, const Accelerator& accel) {
     std::optional<EnvironmentLight> environment;
     if (const auto& env = scene.environment)
         environment.emplace(env->radiance, env->scale, env->to_world, env->sampling);
-    // The environment's power estimate needs the scene's size: its bounding sphere.
+    // The environment's and the directional lights' power need the scene's size: its bounding
+    // sphere (pbrt-v4's Bounds3::BoundingSphere: centre and half diagonal).
     Bounds3f bounds = accel.bounds();
     float scene_radius = bounds.empty() ? 1.0f : std::max(0.5f * length(bounds.diagonal()), 1e-6f);
-    return LightSet(scene.meshes, scene.spheres, scene.shapes, scene.integrator.light_selection,
-                    std::move(environment), scene_radius);
+    std::vector<DeltaLight> delta_lights;
+    for (const DeltaLightSettings& settings : scene.delta_lights) {
+        DeltaLight light = settings.light;
+        if (auto* directional = get_if<DirectionalLight>(&light); directional && settings.directional_power)
+            directional->irradiance *=
+                *settings.directional_power / DirectionalLight::power_per_irradiance(scene_radius);
+        delta_lights.push_back(light);
+    }
+    return LightSet(scene.meshes, scene.spheres, scene.disks, scene.shapes, delta_lights,
+                    scene.integrator.light_selection, std::move(environment), scene_radius);
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& options) {
@@ -136,7 +146,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
 RenderResult render(const Scene& scene, const RenderOptions& options, RenderState start) {
     RenderResult result;
     Clock::time_point build_start = Clock::now();
-    Accelerator accel(scene.meshes, scene.spheres, scene.shapes, alpha_cutouts(scene));
+    Accelerator accel(scene.meshes, scene.spheres, scene.disks, scene.shapes, alpha_cutouts(scene));
 
     LightSet lights = build_light_set(scene, accel);
     result.stats.build_seconds = seconds_since(build_start);

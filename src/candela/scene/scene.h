@@ -9,10 +9,12 @@
 
 #include "candela/camera/camera_settings.h"
 #include "candela/film/film_settings.h"
+#include "candela/geometry/disk.h"
 #include "candela/geometry/shape.h"
 #include "candela/geometry/sphere.h"
 #include "candela/geometry/triangle_mesh.h"
 #include "candela/image/image.h"
+#include "candela/lights/delta_light.h"
 #include "candela/lights/environment_light.h"
 #include "candela/materials/material.h"
 #include "candela/math/rgb.h"
@@ -41,6 +43,15 @@ struct TextureFile {
     std::string pointer;              // the JSON pointer of the first `file` key naming it
 };
 
+// A point, spot or directional light. A directional light given by `power` gets its irradiance
+// only when the scene's size is known (build_light_set): its `irradiance` holds colour x scale,
+// to be multiplied by power / (pi r^2), r the radius of the scene's bounding sphere (pbrt-v4's
+// DistantLight, whose power is pi r^2 E).
+struct DeltaLightSettings {
+    DeltaLight light;
+    std::optional<float> directional_power;  // W; only for a directional light
+};
+
 struct Scene {
     std::filesystem::path file;  // the scene file, as given
 
@@ -56,8 +67,10 @@ struct Scene {
     std::vector<std::string> material_names;  // parallel to materials
     std::vector<TriangleMesh> meshes;
     std::vector<Sphere> spheres;
+    std::vector<Disk> disks;
     std::vector<Shape> shapes;
     std::optional<EnvironmentSettings> environment;
+    std::vector<DeltaLightSettings> delta_lights;
     // Problems that do not stop loading (e.g. an environment map that is not 2:1), one line each,
     // already located ("file: message"); the CLI prints them as warnings.
     std::vector<std::string> warnings;
