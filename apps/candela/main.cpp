@@ -108,6 +108,10 @@ void apply_overrides(const RenderArgs& a, Scene& scene) {
             bad_flag(fmt::format("--integrator: unknown integrator \"{}\"; expected one of: {}", *a.integrator,
                                  names_list(integrator_type_names())));
         scene.integrator.type = *t;
+        // The scene loader refuses the same in a scene file (scene_lights.cpp).
+        if (*t == IntegratorType::kBsdf && !scene.delta_lights.empty())
+            bad_flag("--integrator bsdf: the bsdf integrator finds light only by hitting it, so it cannot see the "
+                     "scene's point, spot or directional lights (they have no area); use path or whitted");
     }
     if (a.sampler) {
         std::optional<SamplerType> t = parse_sampler_type(*a.sampler);

@@ -259,7 +259,7 @@ const BadInput kBadInputs[] = {
     {"environment_scale_zero.json", kLight, kWarning, "", 5, 14, "/lights/0",
      "the environment light emits nothing (its scale is 0); it is ignored"},
     {"no_lights.json", kLight, kWarning, "", 0, 0, "",
-     "the scene has no lights (no shape has an emission and there is no environment); the path integrator will render a black image"},
+     "the scene has no lights (no shape has an emission and there is no environment, point, spot or directional light); the path integrator will render a black image"},
     {"zero_area_quad_light.json", kLight, kError, "", 3, 86, "/shapes/0/edge2",
      "the quad has no area in float precision (its edges are too short)"},
     {"zero_emission.json", kLight, kWarning, "", 5, 27, "/shapes/1/emission",

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "candela/core/check.h"
+
 namespace candela {
 
 namespace {
@@ -9,6 +11,10 @@ namespace {
 // The emitter of a shape's geometry.
 Emitter make_emitter(const Shape& shape, std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
                      std::span<const Disk> disks) {
+    // A disk shape given to the constructor without disks would read past the span.
+    CANDELA_CHECK(shape.index < (shape.kind == ShapeKind::kMesh     ? meshes.size()
+                                 : shape.kind == ShapeKind::kSphere ? spheres.size()
+                                                                    : disks.size()));
     switch (shape.kind) {
         case ShapeKind::kMesh: return MeshEmitter(meshes[shape.index]);
         case ShapeKind::kSphere: return SphereEmitter{spheres[shape.index]};

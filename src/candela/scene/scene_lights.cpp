@@ -1,12 +1,14 @@
 // The `lights` part of a scene file. Area lights are shapes with `emission`; this part holds the
-// lights that are not shapes: for now the environment.
+// lights that are not shapes: the environment, and the point, spot and directional lights.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "candela/image/image_io.h"
@@ -16,7 +18,7 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 1> kLightTypes = {"environment"};
+constexpr std::array<std::string_view, 4> kLightTypes = {"environment", "point", "spot", "directional"};
 constexpr std::array<std::string_view, 2> kEnvironmentSamplingNames = {"importance", "uniform"};
 
 Image read_environment_image(const JsonCursor& file, const std::filesystem::path& folder,
@@ -83,13 +85,133 @@ std::optional<std::string> why_dark(const EnvironmentSettings& env, bool from_fi
     return from_file ? "its image is black" : "its color is 0";
 }
 
+// The colour and power keys every delta light shares: the colour `key` (default 1, white),
+// `scale` and `power`. The colour comes back multiplied by `scale`; `power` (W) is read as is.
+struct DeltaEmission {
+    Color color{1.0f};
+    std::optional<float> power;
+    std::string why_dark;  // empty when the light emits; else what makes it dark
+};
+
+DeltaEmission read_delta_emission(JsonCursor& c, std::string_view key) {
+    DeltaEmission e;
+    std::optional<JsonCursor> color = c.get(key);
+    if (color) e.color = color->colour(Bounds::at_least(0));
+    float scale = 1.0f;
+    if (auto v = c.get("scale")) scale = v->number_f(Bounds::at_least(0));
+    if (auto v = c.get("power")) e.power = v->number_f(Bounds::at_least(0));
+    e.color *= scale;
+    if (e.power && *e.power == 0.0f)
+        e.why_dark = "its power is 0";
+    else if (scale == 0.0f)
+        e.why_dark = "its scale is 0";
+    else if (e.color.is_black())
+        e.why_dark = fmt::format("its {} is 0", key);
+    return e;
+}
+
+// pbrt-v4's `power` normalization (lights.cpp, PointLight::Create and SpotLight::Create): the
+// colour (times scale) is multiplied by power / k_e, k_e the power of a light of unit intensity.
+// As in pbrt-v4, the colour is not divided by its own luminance: a white [1, 1, 1] light emits
+// exactly `power` watts, a coloured one that times its colour.
+Color intensity_for(const DeltaEmission& e, float power_per_intensity) {
+    return e.power ? e.color * (*e.power / power_per_intensity) : e.color;
+}
+
+PointLight read_point(JsonCursor& c, DeltaEmission& e) {
+    PointLight light;
+    light.position = c.require("position").vec3f();
+    e = read_delta_emission(c, "intensity");
+    light.intensity = intensity_for(e, PointLight::power_per_intensity());
+    return light;
+}
+
+// cone_angle (the half-angle where the light ends) in (0, 180], default 30; cone_delta (the width
+// of the falloff inside it) in [0, cone_angle], default 5 or cone_angle if smaller: pbrt-v4's
+// coneangle and conedeltaangle, whose light starts to fall off at coneangle - conedeltaangle. A
+// cone_delta beyond cone_angle would start the falloff at a negative angle, which pbrt-v4 reads
+// as the same positive one: refused instead.
+SpotLight read_spot(JsonCursor& c, DeltaEmission& e) {
+    SpotLight light;
+    JsonCursor position = c.require("position"), look_at = c.require("look_at");
+    light.position = position.vec3f();
+    Vec3f target = look_at.vec3f();
+    Vec3d axis = Vec3d(target) - Vec3d(light.position);
+    if (axis == Vec3d(0.0))
+        look_at.fail(fmt::format("look_at equals position [{}, {}, {}]; the spot light has no direction",
+                                 light.position.x, light.position.y, light.position.z));
+    light.axis = Vec3f(normalize(axis));
+    float cone_angle = 30.0f;
+    if (auto v = c.get("cone_angle")) cone_angle = v->number_f(Bounds{0.0, 180.0, true, false});
+    float cone_delta = std::min(5.0f, cone_angle);
+    if (auto v = c.get("cone_delta")) {
+        cone_delta = v->number_f(Bounds::at_least(0));
+        if (cone_delta > cone_angle)
+            v->fail(fmt::format("cone_delta {} is larger than cone_angle {}: the falloff must lie inside "
+                                "the cone (expected a number in [0, {}])",
+                                cone_delta, cone_angle, cone_angle));
+    }
+    light.cos_falloff_end = std::cos(radians(cone_angle));
+    light.cos_falloff_start = std::cos(radians(cone_angle - cone_delta));
+    e = read_delta_emission(c, "intensity");
+    light.intensity =
+        intensity_for(e, SpotLight::power_per_intensity(light.cos_falloff_start, light.cos_falloff_end));
+    return light;
+}
+
+DirectionalLight read_directional(JsonCursor& c, DeltaEmission& e) {
+    DirectionalLight light;
+    JsonCursor direction = c.require("direction");
+    Vec3d d = direction.vec3();
+    if (!is_finite(normalize(d))) direction.fail_expected("a nonzero direction");
+    light.direction = Vec3f(normalize(d));
+    e = read_delta_emission(c, "irradiance");
+    // With `power`, the irradiance waits for the scene's size (DeltaLightSettings).
+    light.irradiance = e.color;
+    return light;
+}
+
+// A point, spot or directional light, `type` already read; nothing when it emits nothing.
+std::optional<DeltaLightSettings> read_delta_light(JsonCursor& c, std::string_view type, Scene& scene) {
+    DeltaEmission e;
+    DeltaLightSettings settings;
+    if (type == "point") {
+        settings.light = read_point(c, e);
+    } else if (type == "spot") {
+        settings.light = read_spot(c, e);
+    } else {
+        settings.light = read_directional(c, e);
+        settings.directional_power = e.power;
+    }
+    c.reject_unknown_keys();
+    if (!e.why_dark.empty()) {
+        add_warning(scene, c, fmt::format("the {} light emits nothing ({}); it is ignored", type, e.why_dark));
+        return std::nullopt;
+    }
+    // BSDF sampling alone finds light by hitting it, and nothing hits a point or a direction: the
+    // image would be rendered without this light, so the scene is refused (pbrt-v4 renders it
+    // black without a word). The integrator is what the user can change, so the error is there.
+    if (scene.integrator.type == IntegratorType::kBsdf)
+        c.document().fail("/integrator/type",
+                          fmt::format("the bsdf integrator finds light only by hitting it, so it cannot see "
+                                      "the {} light at {} (point, spot and directional lights have no "
+                                      "area); use path or whitted, or an area light (a shape with emission)",
+                                      type, c.pointer()));
+    return settings;
+}
+
 }  // namespace
 
 void read_lights(const JsonCursor& lights, const std::filesystem::path& folder, Scene& scene,
                  MemoryBudget& budget) {
     std::string first_environment;
     for (JsonCursor c : lights.elements()) {
-        c.require("type").choice("light type", kLightTypes);
+        std::string_view type = c.require("type").choice("light type", kLightTypes);
+        if (type != "environment") {
+            if (std::optional<DeltaLightSettings> light = read_delta_light(c, type, scene))
+                scene.delta_lights.push_back(*light);
+            continue;
+        }
         if (!first_environment.empty())
             c.fail(fmt::format("a scene has at most one environment light, and {} is one",
                                first_environment));

@@ -208,13 +208,14 @@ std::string read_text_file(const std::filesystem::path& file) {
 void warn_if_unlit(Scene& scene) {
     const IntegratorType t = scene.integrator.type;
     if (t != IntegratorType::kPath && t != IntegratorType::kBsdf && t != IntegratorType::kWhitted) return;
-    if (scene.environment) return;
+    if (scene.environment || !scene.delta_lights.empty()) return;
     for (const Shape& shape : scene.shapes)
         if (!shape.emission.is_black()) return;
     scene.warnings.push_back(
         SceneError(SourceLocation{scene.file.string(), 0, 0, ""},
                    fmt::format("the scene has no lights (no shape has an emission and there is no "
-                               "environment); the {} integrator will render a black image",
+                               "environment, point, spot or directional light); the {} integrator "
+                               "will render a black image",
                                integrator_type_name(t)))
             .formatted());
 }

@@ -43,11 +43,12 @@ FloatParam read_float_param(const JsonCursor& c, Scene& scene, const Bounds& bou
 ColorParam read_normal_map_param(const JsonCursor& c, Scene& scene);
 
 // `shapes`: meshes (loaded relative to `folder`, each charged to `budget` before it is built),
-// quads and spheres; needs the materials.
+// quads, spheres and disks; needs the materials.
 void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene,
                  MemoryBudget& budget);
 
-// `lights`: at most one environment, charged to `budget`.
+// `lights`: at most one environment, charged to `budget`, and point, spot and directional lights;
+// needs the integrator (bsdf cannot see delta lights).
 void read_lights(const JsonCursor& lights, const std::filesystem::path& folder, Scene& scene,
                  MemoryBudget& budget);
 

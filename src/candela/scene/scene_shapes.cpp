@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "candela/geometry/disk.h"
 #include "candela/scene/enum_names.h"
 #include "candela/scene/mesh_loader.h"
 #include "candela/scene/scene_sections.h"
@@ -16,7 +17,7 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 3> kShapeTypes = {"mesh", "sphere", "quad"};
+constexpr std::array<std::string_view, 4> kShapeTypes = {"mesh", "sphere", "quad", "disk"};
 // |sin| of the angle between a quad's edges below which it has no usable area or normal.
 constexpr double kParallelSine = 1e-6;
 
@@ -51,6 +52,37 @@ TriangleMesh read_quad(JsonCursor& c) {
         edge2.fail(fmt::format("edge2 {} is parallel to edge1 {}; the quad has no area",
                                format_vec(e2), format_vec(e1)));
     return make_quad(p, e1, e2);
+}
+
+// `disk`: centre, front normal and radius, then the transform (object to world) and
+// reverse_orientation. The disk stays in double; what must hold in float is checked here, because
+// hits and light samples are float: its bounds within float range and its area above 0.
+Disk read_disk(JsonCursor& c, bool reverse_orientation) {
+    JsonCursor center = c.require("center"), normal = c.require("normal"), radius = c.require("radius");
+    Vec3d n = normal.vec3();
+    if (!is_finite(normalize(n))) normal.fail_expected("a nonzero normal");
+    double r = radius.number(Bounds::above(0));
+    Disk disk = make_round_disk(center.vec3(), n, r);
+    std::optional<JsonCursor> transform = c.get("transform");
+    Transform to_world;
+    if (transform) to_world = read_transform(*transform);
+    c.reject_unknown_keys();
+    disk = transform_disk(disk, to_world, reverse_orientation);
+    const JsonCursor& blame = transform ? *transform : radius;
+    // The axes an invertible transform leaves are never parallel, but they may be nearly so.
+    const double spanned = length(cross(disk.axis_u, disk.axis_v));
+    if (!(spanned > kParallelSine * length(disk.axis_u) * length(disk.axis_v)))
+        blame.fail("the transform flattens the disk to a line; it has no area");
+    Vec3d half(std::hypot(disk.axis_u.x, disk.axis_v.x), std::hypot(disk.axis_u.y, disk.axis_v.y),
+               std::hypot(disk.axis_u.z, disk.axis_v.z));
+    if (!is_finite(Vec3f(disk.center - half)) || !is_finite(Vec3f(disk.center + half)))
+        blame.fail(transform ? "the transform moves the disk beyond float range"
+                             : "the disk reaches beyond float range");
+    const auto area = static_cast<float>(disk.area());
+    if (!(area > 0.0f) || !std::isfinite(1.0f / area))
+        blame.fail(transform ? "the transform leaves the disk with no area in float precision"
+                             : "the disk has no area in float precision (its radius is too small)");
+    return disk;
 }
 
 // Triangles whose area is zero or not finite in float (repeated or collinear corners, or sizes
@@ -135,6 +167,15 @@ void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene,
         shape.kind = ShapeKind::kSphere;
         shape.index = static_cast<uint32_t>(scene.spheres.size());
         scene.spheres.push_back(sphere);
+        scene.shapes.push_back(shape);
+        return;
+    }
+
+    if (type == "disk") {
+        Disk disk = read_disk(c, reverse_orientation);
+        shape.kind = ShapeKind::kDisk;
+        shape.index = static_cast<uint32_t>(scene.disks.size());
+        scene.disks.push_back(disk);
         scene.shapes.push_back(shape);
         return;
     }
