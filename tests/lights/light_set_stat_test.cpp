@@ -14,7 +14,7 @@
 namespace candela::test {
 namespace {
 
-constexpr int kChi2Tests = 11;  // in this file, for the Sidak correction
+constexpr int kChi2Tests = 14;  // in this file, for the Sidak correction
 const Rgb kWhite{1.0f};
 
 // The harness integrates each cell's pdf from a grid of nodes 1/16 of a cell apart, so the corner
@@ -41,17 +41,20 @@ void expect_corners_clear_of_cell_edges(const LightTestScene& scene, const Vec3f
     }
 }
 
+// `expected_integral`: the probability that sample() picks a light with a density over
+// directions (not a delta light, whose samples the sampler below counts as failures).
 void expect_fits(const LightTestScene& scene, LightSelection selection, const Vec3f& ref,
-                 SphericalDomain domain = {}) {
+                 SphericalDomain domain = {}, double expected_integral = 1.0) {
     LightSet lights = scene.light_set(selection);
     Chi2Options opt;
     opt.test_count = kChi2Tests;
+    opt.expected_integral = expected_integral;
     expect_corners_clear_of_cell_edges(scene, ref, domain, opt);
     auto sampler = [&](Sampler& rng) -> std::optional<Vec3f> {
         float uc = rng.next_float();
         Vec2f u = rng.next_vec2f();
         std::optional<LightSample> s = lights.sample(ref, uc, u);
-        if (!s) return std::nullopt;
+        if (!s || s->is_delta) return std::nullopt;
         return normalize(s->p - ref);
     };
     auto pdf = [&](Vec3f w) { return scene.direction_pdf(lights, ref, w); };
@@ -143,6 +146,40 @@ TEST(LightSetChi2, TwoSidedQuadSeenFromBehindAndASphere) {
     scene.add_mesh(make_quad({-0.5f, 0.5f, 1.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 0.96f, 0.0f}), Rgb(0.5f), true);
     scene.add_sphere({Vec3d(0.0, -2.0, 0.5), 0.8, false}, Rgb(3.0f));
     expect_fits(scene, LightSelection::kPower, {0.0f, 0.0f, 0.0f});
+}
+
+TEST(LightSetChi2, DiskFacingThePoint) {
+    LightTestScene scene;
+    scene.add_disk(make_round_disk({0.2, -0.1, 1.5}, {-0.1, 0.2, -1.0}, 0.8), kWhite);
+    expect_fits(scene, LightSelection::kPower, {0.0f, 0.0f, 0.0f});
+}
+
+TEST(LightSetChi2, TiltedEllipseSeenObliquely) {
+    // Scaled unevenly, rotated and seen from the side: area sampling stays uniform on the
+    // ellipse (the concentric map carried by an affine map), and the solid-angle density varies
+    // strongly over it.
+    LightTestScene scene;
+    scene.add_disk(transform_disk(make_round_disk({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 1.0),
+                                  Transform::translate({1.0, 0.3, 1.2}) * Transform::rotate({0.0, 1.0, 0.0}, 1.1) *
+                                      Transform::scale({1.3, 0.4, 1.0}),
+                                  false),
+                   kWhite, true);
+    expect_fits(scene, LightSelection::kPower, {0.0f, 0.0f, 0.0f});
+}
+
+TEST(LightSetChi2, DiskAndSphereBesideDeltaLights) {
+    // Point and directional lights take their share of the selection: the area lights' samples
+    // keep their densities, scaled by their own (smaller) selection probabilities.
+    LightTestScene scene;
+    scene.add_disk(make_round_disk({-1.0, 0.5, 1.0}, {1.0, -0.5, -1.0}, 0.6), Rgb(2.0f));
+    scene.add_sphere({Vec3d(1.2, -0.4, 0.8), 0.5, false}, Rgb(1.0f));
+    scene.add_delta_light(PointLight{{0.0f, 2.0f, 0.0f}, Color(0.3f)});
+    scene.add_delta_light(DirectionalLight{{0.0f, -1.0f, 0.0f}, Color(0.1f)});
+    LightSet lights = scene.light_set();
+    double area_lights = static_cast<double>(lights.selection_probability(0)) +
+                         static_cast<double>(lights.selection_probability(1));
+    ASSERT_LT(area_lights, 0.9);
+    expect_fits(scene, LightSelection::kPower, {0.0f, 0.0f, 0.0f}, {}, area_lights);
 }
 
 }  // namespace

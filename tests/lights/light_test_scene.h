@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "candela/geometry/disk_intersection.h"
 #include "candela/geometry/sphere_intersection.h"
 #include "candela/lights/light_set.h"
 
@@ -15,7 +16,9 @@ namespace candela::test {
 struct LightTestScene {
     std::vector<TriangleMesh> meshes;
     std::vector<Sphere> spheres;
+    std::vector<Disk> disks;
     std::vector<Shape> shapes;
+    std::vector<DeltaLight> delta_lights;
 
     // Adds a shape and returns its id. Build the LightSet after the last one (it keeps spans).
     uint32_t add_mesh(TriangleMesh mesh, Rgb emission, bool two_sided = false) {
@@ -28,14 +31,24 @@ struct LightTestScene {
         shapes.push_back({ShapeKind::kSphere, static_cast<uint32_t>(spheres.size() - 1), 0, emission, two_sided});
         return static_cast<uint32_t>(shapes.size() - 1);
     }
-    LightSet light_set(LightSelection selection = LightSelection::kPower) const {
-        return LightSet(meshes, spheres, shapes, selection);
+    uint32_t add_disk(const Disk& disk, Rgb emission, bool two_sided = false) {
+        disks.push_back(disk);
+        shapes.push_back({ShapeKind::kDisk, static_cast<uint32_t>(disks.size() - 1), 0, emission, two_sided});
+        return static_cast<uint32_t>(shapes.size() - 1);
+    }
+    void add_delta_light(const DeltaLight& light) { delta_lights.push_back(light); }
+    // The light set of the shapes and delta lights (and `environment`), in a scene of bounding
+    // radius `scene_radius` (directional lights' and the environment's power).
+    LightSet light_set(LightSelection selection = LightSelection::kPower,
+                       std::optional<EnvironmentLight> environment = std::nullopt, float scene_radius = 1.0f) const {
+        return LightSet(meshes, spheres, disks, shapes, delta_lights, selection, std::move(environment), scene_radius);
     }
 
     // The density per solid angle of the direction w (unit) of normalize(sample().p - ref): the sum
     // of LightSet::pdf over every light point on the ray from ref, because area sampling also draws
     // points hidden behind others of the same mesh. A sphere seen from outside counts once: its
-    // cone sampling draws only the visible point of each direction.
+    // cone sampling draws only the visible point of each direction. A disk is planar: one point.
+    // Delta lights have no density over directions and are left out.
     double direction_pdf(const LightSet& lights, const Vec3f& ref, const Vec3f& w) const {
         double sum = 0.0;
         for (uint32_t id = 0; id < shapes.size(); ++id) {
@@ -47,6 +60,14 @@ struct LightTestScene {
                 Vec3d p = project_to_sphere(s, Vec3d(ref) + Vec3d(w) * *t);
                 Vec3f n((p - s.center) / s.radius);
                 sum += static_cast<double>(lights.pdf(ref, id, Vec3f(p), n));
+                continue;
+            }
+            if (shape.kind == ShapeKind::kDisk) {
+                const Disk& d = disks[shape.index];
+                std::optional<double> t = intersect_disk(d, Vec3d(ref), Vec3d(w), 0.0, 1e30);
+                if (!t) continue;
+                Vec3d p = project_to_disk_plane(d, Vec3d(ref) + Vec3d(w) * *t);
+                sum += static_cast<double>(lights.pdf(ref, id, Vec3f(p), Vec3f(d.normal)));
                 continue;
             }
             const TriangleMesh& m = meshes[shape.index];
