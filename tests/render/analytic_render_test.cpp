@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "support/plane_irradiance.h"
 #include "support/polygon_irradiance.h"
 #include "support/render_moments.h"
 #include "support/test_scenes.h"
@@ -82,79 +83,18 @@ Scene light_over_plane(const LitPlane& setup) {
     return s;
 }
 
-// Per pixel: whether its whole footprint sees the receiver plane within kMaxDistance of the
-// light's axis (there every estimator finds the light often enough for its sample variance to be
-// a fair estimate), and if so the expected value rho E / pi, for unit rho, averaged over the
-// footprint (16 x 16 midpoint rule on the film, the box filter's uniform density; E is smooth, so
-// the rule's error is far below the noise).
-struct ExpectedImage {
-    std::vector<bool> valid;
-    std::vector<double> value;
-};
-
-ExpectedImage expected_image(const Scene& scene, const LitPlane& setup) {
-    PerspectiveCamera camera(scene.camera);
-    ExpectedImage e{std::vector<bool>(kSize * kSize, false), std::vector<double>(kSize * kSize, 0.0)};
+// The expected image of the receiver within kMaxDistance of the light's axis (there every
+// estimator finds the light often enough for its sample variance to be a fair estimate).
+test::ExpectedImage expected_image(const Scene& scene, const LitPlane& setup) {
     const Vec3d n(0, double(setup.normal_y), 0);
     const Polygon light = setup.light();
-    auto on_plane = [&](const Ray& r) {
-        Vec3d o(r.o), d(r.d);
-        return o + d * ((double(setup.receiver_y) - o.y) / d.y);
-    };
-    constexpr int kSub = 16;
-    for (int y = 0; y < kSize; ++y) {
-        for (int x = 0; x < kSize; ++x) {
-            // The footprint's rays form a convex set, and so do those that reach the plane inside
-            // the disk: testing the four corners tests the whole footprint.
-            bool valid = true;
-            for (int corner = 0; corner < 4; ++corner) {
-                Ray r = camera.generate_ray({float(x + corner % 2), float(y + corner / 2)});
-                Vec3d p = on_plane(r);
-                valid = valid && (double(setup.receiver_y) - double(r.o.y)) * double(r.d.y) > 0.0 &&
-                        p.x * p.x + p.z * p.z < kMaxDistance * kMaxDistance;
-            }
-            const size_t i = size_t(y) * kSize + size_t(x);
-            e.valid[i] = valid;
-            if (!valid) continue;
-            double sum = 0.0;
-            for (int sy = 0; sy < kSub; ++sy) {
-                for (int sx = 0; sx < kSub; ++sx) {
-                    Vec2f film(float(x) + (float(sx) + 0.5f) / kSub, float(y) + (float(sy) + 0.5f) / kSub);
-                    sum += polygon_irradiance(on_plane(camera.generate_ray(film)), n, light, double(kRadiance)) / kPiD;
-                }
-            }
-            e.value[i] = sum / (kSub * kSub);
-        }
-    }
-    return e;
+    return test::expected_plane_image(scene, {setup.receiver_y, setup.normal_y, 0.0, 0.0, kMaxDistance},
+                                      [&](const Vec3d& p) { return polygon_irradiance(p, n, light, double(kRadiance)); });
 }
 
 // z-tests of every block of valid pixels against `scale` times the closed form.
-test::ZTestFamily test_against(const test::RenderMoments& m, const ExpectedImage& e, double scale) {
-    auto valid_block = [&](int x0, int y0) {
-        for (int y = y0; y < y0 + kBlock; ++y)
-            for (int x = x0; x < x0 + kBlock; ++x)
-                if (!e.valid[size_t(y) * kSize + size_t(x)]) return false;
-        return true;
-    };
-    long blocks = 0;
-    for (int y = 0; y < kSize; y += kBlock)
-        for (int x = 0; x < kSize; x += kBlock) blocks += valid_block(x, y) ? 1 : 0;
-    test::ZTestFamily family(test::sidak_critical_z(test::kRenderTestAlpha, 3 * blocks));
-    for (int y = 0; y < kSize; y += kBlock) {
-        for (int x = 0; x < kSize; x += kBlock) {
-            if (!valid_block(x, y)) continue;
-            double expected = 0.0;
-            for (int yy = y; yy < y + kBlock; ++yy)
-                for (int xx = x; xx < x + kBlock; ++xx) expected += e.value[size_t(yy) * kSize + size_t(xx)];
-            expected *= scale / (kBlock * kBlock);
-            for (int c = 0; c < 3; ++c) {
-                test::BlockEstimate b = test::block_estimate(m, x, y, kBlock, c);
-                family.add(b.mean - double(kAlbedo[c]) * expected, b.variance, x, y, c);
-            }
-        }
-    }
-    return family;
+test::ZTestFamily test_against(const test::RenderMoments& m, const test::ExpectedImage& e, double scale) {
+    return test::test_plane_image(m, e, kAlbedo, scale, kBlock);
 }
 
 struct EstimatorCase {
@@ -178,7 +118,7 @@ class QuadLightIrradiance : public ::testing::TestWithParam<EstimatorCase> {
         Scene scene = scene_for(setup);
         test::RenderMoments m = test::render_moments(scene);
         EXPECT_EQ(m.dropped, 0u);
-        ExpectedImage e = expected_image(scene, setup);
+        test::ExpectedImage e = expected_image(scene, setup);
         ASSERT_GT(std::count(e.valid.begin(), e.valid.end(), true), kSize * kSize / 4);
         test::ZTestFamily family = test_against(m, e, 1.0);
         EXPECT_TRUE(family.passed()) << family.summary();
