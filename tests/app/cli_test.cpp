@@ -69,6 +69,28 @@ TEST(Cli, BadFlagsExitTwo) {
     EXPECT_EQ(run_candela("render").exit_code, 2);
 }
 
+TEST(Cli, BsdfIntegratorFlagRefusesDeltaLights) {
+    // The scene file's bsdf is refused by the loader (scene_delta_lights_test.cpp); the flag
+    // that sets it after loading is refused too, rather than rendering without the light.
+    fs::path dir = temp_dir("bsdf_delta");
+    fs::path scene = dir / "point.json";
+    std::ofstream(scene) << R"({"materials": {"m": {"type": "diffuse"}},
+        "shapes": [{"type": "quad", "corner": [-1, 0, -1], "edge1": [0, 0, 2], "edge2": [2, 0, 0], "material": "m"}],
+        "camera": {"position": [0, 2, -3], "look_at": [0, 0, 0], "resolution": [8, 8]},
+        "lights": [{"type": "point", "position": [0, 1, 0], "intensity": 3}]})";
+    CliResult r = run_candela("render " + scene.string() + " --integrator bsdf -o " + (dir / "x.png").string());
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output,
+              "candela: error: --integrator bsdf: the bsdf integrator finds light only by hitting it, so it "
+              "cannot see the scene's point, spot or directional lights (they have no area); use path or "
+              "whitted\n");
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+    CliResult ok = run_candela("render " + scene.string() + " --integrator whitted --spp 1 -o " +
+                               (dir / "y.png").string());
+    EXPECT_EQ(ok.exit_code, 0) << ok.output;
+    EXPECT_TRUE(fs::exists(dir / "y.png"));
+}
+
 TEST(Cli, RendersWithOverridesToEveryFormat) {
     fs::path dir = temp_dir("render");
     std::string outs;

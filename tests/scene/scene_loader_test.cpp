@@ -243,12 +243,18 @@ TEST(SceneLoader, LoadsEverySectionFromAFile) {
     EXPECT_EQ(s.materials[0].surface.normal_map_convention, NormalMapConvention::kDirectX);
     EXPECT_TRUE(s.materials[1].surface.bump_map);
     EXPECT_TRUE(s.materials[2].surface.alpha.is_textured());
-    ASSERT_EQ(s.shapes.size(), 3u);
+    ASSERT_EQ(s.shapes.size(), 4u);
     EXPECT_EQ(s.meshes.size(), 2u);
     EXPECT_EQ(s.spheres.size(), 1u);
+    ASSERT_EQ(s.disks.size(), 1u);
+    EXPECT_EQ(s.disks[0].center.y, 3.5);
     ASSERT_TRUE(s.environment);
     EXPECT_EQ(s.environment->radiance.width, 2);
     EXPECT_EQ(s.environment->scale, 0.5f);
+    ASSERT_EQ(s.delta_lights.size(), 3u);
+    EXPECT_TRUE(std::holds_alternative<PointLight>(s.delta_lights[0].light));
+    EXPECT_TRUE(std::holds_alternative<SpotLight>(s.delta_lights[1].light));
+    EXPECT_EQ(s.delta_lights[2].directional_power, 10.0f);
 }
 
 TEST(SceneLoader, EveryExampleSceneLoads) {
