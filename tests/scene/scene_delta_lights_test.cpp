@@ -185,6 +185,13 @@ TEST(SceneLoaderDeltaLights, BadValuesAreLocated) {
                  "expected a nonzero direction, got [0, 0, 0]");
     expect_error(R"({"type": "directional", "direction": [0, -1, 0], "position": [0, 0, 0]})", "/lights/0",
                  "unknown key \"position\"; expected one of: direction, irradiance, power, scale, type");
+    expect_error(R"({"type": "point", "position": [0, 0, 0], "intensity": 1e30, "scale": 1e30})", "/lights/0/scale",
+                 "the light's intensity overflows float range");
+    expect_error(R"({"type": "spot", "position": [0, 0, 0], "look_at": [0, 0, 1], "cone_angle": 0.001,
+                     "power": 1e38})",
+                 "/lights/0/power", "the light's intensity overflows float range");
+    expect_error(R"({"type": "directional", "direction": [0, -1, 0], "irradiance": 1e30, "scale": 1e30})",
+                 "/lights/0/scale", "the light's irradiance overflows float range");
     expect_error(R"({"type": "sun"})", "/lights/0/type",
                  "unknown light type \"sun\"; expected one of: directional, environment, point, spot");
 }

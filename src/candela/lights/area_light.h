@@ -15,6 +15,18 @@ namespace candela {
 
 using Emitter = Variant<MeshEmitter, SphereEmitter, DiskEmitter>;
 
+// visit(f, emitter) with meshes (and quads), the common emitters, tested first: one comparison
+// of the index, where visit compares it with each other alternative (and the valueless state)
+// before reaching the first. Each alternative is called from one place only, so that the
+// compiler keeps inlining the mesh's sampling into the light set's (measured: a call otherwise).
+template <class F>
+CANDELA_HD decltype(auto) visit_emitter(const Emitter& emitter, F&& f) {
+    static_assert(std::variant_size_v<Emitter> == 3, "visit_emitter must call every emitter type");
+    if (const MeshEmitter* mesh = get_if<MeshEmitter>(&emitter)) return f(*mesh);
+    if (const SphereEmitter* sphere = get_if<SphereEmitter>(&emitter)) return f(*sphere);
+    return f(*get_if<DiskEmitter>(&emitter));
+}
+
 struct AreaLight {
     Emitter emitter;
     Rgb emission;

@@ -55,6 +55,7 @@ LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere>
         weights.push_back(selection == LightSelection::kPower ? power : 1.0f);
         delta_lights_.push_back(light);
     }
+    size_ = weights.size();
     selection_ = Distribution1D(weights);
     for (size_t i = 0; i < weights.size(); ++i) selection_probability_.push_back(selection_.probability(i));
 }
@@ -79,7 +80,7 @@ CANDELA_HD std::optional<LightSample> LightSet::sample(const Vec3f& ref, float u
         return result;
     }
     const AreaLight& light = lights_[chosen];
-    std::optional<EmitterSample> es = visit([&](const auto& e) { return e.sample(ref, u); }, light.emitter);
+    std::optional<EmitterSample> es = visit_emitter(light.emitter, [&](const auto& e) { return e.sample(ref, u); });
     if (!es) return result;
     // The same product, in the same order, as pdf() computes.
     float pdf = probability * es->pdf;
@@ -113,7 +114,8 @@ CANDELA_HD void LightSet::sample_beyond_area_lights(const Vec3f& ref, uint32_t c
 CANDELA_HD float LightSet::pdf(const Vec3f& ref, uint32_t shape_id, const Vec3f& p_light, const Vec3f& n_light) const {
     uint32_t li = light_index(shape_id);
     if (li == kNoLight) return 0.0f;
-    float emitter_pdf = visit([&](const auto& e) { return e.pdf(ref, p_light, n_light); }, lights_[li].emitter);
+    float emitter_pdf =
+        visit_emitter(lights_[li].emitter, [&](const auto& e) { return e.pdf(ref, p_light, n_light); });
     return selection_probability_[li] * emitter_pdf;
 }
 

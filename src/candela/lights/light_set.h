@@ -49,8 +49,10 @@ class LightSet {
              std::optional<EnvironmentLight> environment = std::nullopt, float scene_radius = 1.0f)
         : LightSet(meshes, spheres, {}, shapes, {}, selection, std::move(environment), scene_radius) {}
 
-    CANDELA_HD bool empty() const { return lights_.empty() && !environment_ && delta_lights_.empty(); }
-    CANDELA_HD size_t size() const { return lights_.size() + (environment_ ? 1 : 0) + delta_lights_.size(); }
+    // The count of all lights is kept, not summed from the three kinds: the integrators ask
+    // empty() and uses_choice() at every vertex.
+    CANDELA_HD bool empty() const { return size_ == 0; }
+    CANDELA_HD size_t size() const { return size_; }
     CANDELA_HD bool has_environment() const { return environment_.has_value(); }
     // Whether there are point, spot or directional lights, which only light sampling can find.
     CANDELA_HD bool has_delta_lights() const { return !delta_lights_.empty(); }
@@ -98,6 +100,7 @@ class LightSet {
     std::optional<EnvironmentLight> environment_;
     std::vector<DeltaLight> delta_lights_;
     uint32_t delta_begin_ = 0;              // the selection index of delta_lights_[0]
+    size_t size_ = 0;                       // area lights, environment and delta lights
     Distribution1D selection_;              // over lights_, then the environment, then delta_lights_
     std::vector<float> selection_probability_;  // selection_.probability(i), computed once: it
                                                 // divides in double, and NEE and MIS ask per vertex

@@ -114,15 +114,18 @@ DeltaEmission read_delta_emission(JsonCursor& c, std::string_view key) {
 // colour (times scale) is multiplied by power / k_e, k_e the power of a light of unit intensity.
 // As in pbrt-v4, the colour is not divided by its own luminance: a white [1, 1, 1] light emits
 // exactly `power` watts, a coloured one that times its colour.
-Color intensity_for(const DeltaEmission& e, float power_per_intensity) {
-    return e.power ? e.color * (*e.power / power_per_intensity) : e.color;
+Color intensity_for(const DeltaEmission& e, float power_per_intensity, JsonCursor& c) {
+    if (!e.color.is_finite()) c.get("scale")->fail("the light's intensity overflows float range");
+    Color intensity = e.power ? e.color * (*e.power / power_per_intensity) : e.color;
+    if (!intensity.is_finite()) c.get("power")->fail("the light's intensity overflows float range");
+    return intensity;
 }
 
 PointLight read_point(JsonCursor& c, DeltaEmission& e) {
     PointLight light;
     light.position = c.require("position").vec3f();
     e = read_delta_emission(c, "intensity");
-    light.intensity = intensity_for(e, PointLight::power_per_intensity());
+    light.intensity = intensity_for(e, PointLight::power_per_intensity(), c);
     return light;
 }
 
@@ -155,7 +158,7 @@ SpotLight read_spot(JsonCursor& c, DeltaEmission& e) {
     light.cos_falloff_start = std::cos(radians(cone_angle - cone_delta));
     e = read_delta_emission(c, "intensity");
     light.intensity =
-        intensity_for(e, SpotLight::power_per_intensity(light.cos_falloff_start, light.cos_falloff_end));
+        intensity_for(e, SpotLight::power_per_intensity(light.cos_falloff_start, light.cos_falloff_end), c);
     return light;
 }
 
@@ -168,6 +171,7 @@ DirectionalLight read_directional(JsonCursor& c, DeltaEmission& e) {
     e = read_delta_emission(c, "irradiance");
     // With `power`, the irradiance waits for the scene's size (DeltaLightSettings).
     light.irradiance = e.color;
+    if (!light.irradiance.is_finite()) c.get("scale")->fail("the light's irradiance overflows float range");
     return light;
 }
 
