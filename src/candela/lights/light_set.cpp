@@ -76,7 +76,15 @@ CANDELA_HD std::optional<LightSample> LightSet::sample(const Vec3f& ref, float u
     const uint32_t chosen = uses_choice() ? selection_.sample_discrete(uc).index : 0;
     const float probability = selection_probability_[chosen];
     if (chosen >= lights_.size()) {  // the environment or a delta light
-        sample_beyond_area_lights(ref, chosen, probability, u, result);
+        if (chosen >= delta_begin_) {
+            sample_delta_light_at(ref, chosen - delta_begin_, probability, result);
+            return result;
+        }
+        std::optional<EnvironmentSample> es = environment_->sample(u);
+        if (!es) return result;
+        float pdf = probability * es->pdf;
+        if (!(pdf > 0.0f) || !std::isfinite(pdf)) return result;
+        result.emplace(LightSample{ref + es->wi, -es->wi, es->wi, true, false, es->Le, pdf});
         return result;
     }
     const AreaLight& light = lights_[chosen];
@@ -95,17 +103,9 @@ CANDELA_HD std::optional<LightSample> LightSet::sample(const Vec3f& ref, float u
     return result;
 }
 
-CANDELA_HD void LightSet::sample_beyond_area_lights(const Vec3f& ref, uint32_t chosen, float probability,
-                                                    const Vec2f& u, std::optional<LightSample>& result) const {
-    if (chosen < delta_begin_) {  // the environment
-        std::optional<EnvironmentSample> es = environment_->sample(u);
-        if (!es) return;
-        float pdf = probability * es->pdf;
-        if (!(pdf > 0.0f) || !std::isfinite(pdf)) return;
-        result.emplace(LightSample{ref + es->wi, -es->wi, es->wi, true, false, es->Le, pdf});
-        return;
-    }
-    std::optional<DeltaLightSample> ds = sample_delta_light(delta_lights_[chosen - delta_begin_], ref);
+CANDELA_HD void LightSet::sample_delta_light_at(const Vec3f& ref, uint32_t index, float probability,
+                                                std::optional<LightSample>& result) const {
+    std::optional<DeltaLightSample> ds = sample_delta_light(delta_lights_[index], ref);
     if (!ds || ds->Li.is_black()) return;
     // The sample is certain given the light: the only density is the selection's.
     result.emplace(LightSample{ds->p, -ds->wi, ds->wi, ds->infinite, true, ds->Li, probability});

@@ -86,9 +86,11 @@ class LightSet {
   private:
     static constexpr uint32_t kNoLight = 0xffffffffu;
 
-    // sample() for a selection index past the area lights: the environment or a delta light.
-    CANDELA_HD void sample_beyond_area_lights(const Vec3f& ref, uint32_t chosen, float probability, const Vec2f& u,
-                                              std::optional<LightSample>& result) const;
+    // sample() for delta_lights_[index], chosen with `probability`: written into `result`, out
+    // of line (the area lights' and the environment's paths stay as they were without delta
+    // lights).
+    CANDELA_HD void sample_delta_light_at(const Vec3f& ref, uint32_t index, float probability,
+                                          std::optional<LightSample>& result) const;
 
     // The index in lights_ of shape `shape_id`, or kNoLight.
     CANDELA_HD uint32_t light_index(uint32_t shape_id) const {
