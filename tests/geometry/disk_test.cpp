@@ -1,7 +1,7 @@
 // Disks (geometry/disk.h): the axes of the scene file's round disk, transforms (ellipses, mirrors,
-// reverse_orientation), the precise intersection in double, pbrt-v4's (u, v), and disks in the
-// Embree accelerator: hit records, occlusion, bounds, and spawned rays that never hit the disk
-// they leave.
+// reverse_orientation), the precise intersection in double, pbrt-v4's (u, v) and its derivatives,
+// and disks in the Embree accelerator: hit records, occlusion, bounds, alpha cutouts, and spawned
+// rays that never hit the disk they leave.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "candela/geometry/accelerator.h"
+#include "candela/geometry/alpha_cutout.h"
 #include "candela/geometry/disk.h"
 #include "candela/geometry/disk_intersection.h"
 #include "candela/geometry/ray_offset.h"
@@ -120,17 +121,77 @@ TEST(DiskUv, FollowsPbrtsParameterisation) {
     EXPECT_LT(uv(1, -1e-12).x, 1.0f);
 }
 
-// A scene of disks only, shape i = disk i.
+TEST(DiskShadingGeometry, DerivativesAreThoseOfTheParameterisation) {
+    // An ellipse, tilted: P(u, v) = center + (1 - v) (cos 2pi u axis_u + sin 2pi u axis_v).
+    const Disk d = transform_disk(make_round_disk({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 1.0),
+                                  Transform::translate({1.0, -2.0, 0.5}) * Transform::rotate({1.0, 2.0, 0.0}, 0.7) *
+                                      Transform::scale({1.5, 0.6, 1.0}),
+                                  false);
+    auto point = [&](double u, double v) {
+        return d.point((1.0 - v) * std::cos(2.0 * kPiD * u), (1.0 - v) * std::sin(2.0 * kPiD * u));
+    };
+    for (auto [u, v] : {std::pair{0.1, 0.3}, std::pair{0.45, 0.8}, std::pair{0.9, 0.05}}) {
+        const ShadingGeometry g = disk_shading_geometry(d, point(u, v));
+        EXPECT_NEAR(g.uv.x, u, 1e-6);
+        EXPECT_NEAR(g.uv.y, v, 1e-6);
+        const double h = 1e-6;
+        const Vec3d dpdu = (point(u + h, v) - point(u - h, v)) / (2.0 * h);
+        const Vec3d dpdv = (point(u, v + h) - point(u, v - h)) / (2.0 * h);
+        expect_near(Vec3d(g.dpdu), dpdu, 1e-5);
+        expect_near(Vec3d(g.dpdv), dpdv, 1e-5);
+        EXPECT_GT(dot(Vec3d(cross(g.dpdu, g.dpdv)), d.normal), 0.0);
+        EXPECT_EQ(g.dndu, Vec3f(0.0f));
+        EXPECT_EQ(g.dndv, Vec3f(0.0f));
+    }
+    // At the centre u is undefined: a unit frame around the normal stands in.
+    const ShadingGeometry c = disk_shading_geometry(d, d.center);
+    EXPECT_NEAR(dot(Vec3d(normalize(cross(c.dpdu, c.dpdv))), d.normal), 1.0, 1e-6);
+}
+
+// A scene of disks only, shape i = disk i, of the given alphas (none: all opaque).
 struct DiskScene {
     std::vector<Disk> disks;
     std::vector<Shape> shapes;
     std::unique_ptr<Accelerator> accel;
 
-    explicit DiskScene(std::vector<Disk> d) : disks(std::move(d)) {
+    explicit DiskScene(std::vector<Disk> d, std::vector<float> alphas = {}) : disks(std::move(d)) {
         for (uint32_t i = 0; i < disks.size(); ++i) shapes.push_back({ShapeKind::kDisk, i, 0, {}, false});
-        accel = std::make_unique<Accelerator>(std::span<const TriangleMesh>{}, std::span<const Sphere>{}, disks, shapes);
+        AlphaCutouts cutouts;
+        for (float a : alphas) cutouts.shape_alpha.push_back(FloatParam{a});
+        accel = std::make_unique<Accelerator>(std::span<const TriangleMesh>{}, std::span<const Sphere>{}, disks, shapes,
+                                              cutouts);
     }
 };
+
+TEST(AcceleratorDisk, CutOutDisksLetRaysThroughWithProbabilityOneMinusAlpha) {
+    // Two parallel disks; the near one (z = 1) of alpha 0, then 0.5; the far one (z = 2) opaque.
+    const std::vector<Disk> disks = {make_round_disk({0, 0, 1}, {0, 0, -1}, 5.0), make_round_disk({0, 0, 2}, {0, 0, -1}, 5.0)};
+    Rng rng(6, 1);
+    DiskScene clear(disks, {0.0f, 1.0f});
+    for (int i = 0; i < 200; ++i) {
+        const Vec2f u = rng.next_vec2f();
+        const Ray r{{u.x - 0.5f, u.y - 0.5f, 0.0f}, {0, 0, 1}};
+        auto hit = clear.accel->intersect(r);
+        ASSERT_TRUE(hit);
+        EXPECT_EQ(hit->shape_id, 1u);
+        EXPECT_FALSE(clear.accel->occluded(Ray{r.o, r.d, 0.0f, 1.5f}));
+    }
+    DiskScene half(disks, {0.5f, 1.0f});
+    const int n = 20000;
+    int stopped = 0;
+    for (int i = 0; i < n; ++i) {
+        const Vec2f u = rng.next_vec2f();
+        const Ray r{{u.x - 0.5f, u.y - 0.5f, 0.0f}, normalize(Vec3f(0.1f * u.y, -0.1f * u.x, 1.0f))};
+        auto hit = half.accel->intersect(r);
+        ASSERT_TRUE(hit);
+        const bool near = hit->shape_id == 0u;
+        stopped += near;
+        // intersect() and occluded() agree on the same ray.
+        EXPECT_EQ(half.accel->occluded(Ray{r.o, r.d, 0.0f, 1.5f}), near);
+    }
+    // Binomial(n, 1/2): standard deviation sqrt(n) / 2; 5 of them.
+    EXPECT_NEAR(stopped, n / 2, 5.0 * std::sqrt(double(n)) / 2.0);
+}
 
 TEST(AcceleratorDisk, HitCarriesPointNormalUvAndIds) {
     DiskScene scene({make_round_disk({0, 0, 0}, {0, 0, 1}, 1.0),
