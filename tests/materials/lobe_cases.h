@@ -11,14 +11,18 @@
 namespace candela::test {
 
 // A new lobe type must be added to kLobeCases (and thereby to every test that runs over them).
-static_assert(std::variant_size_v<BsdfLobe> == 4, "add the new lobe to kLobeCases");
+static_assert(std::variant_size_v<BsdfLobe> == 7, "add the new lobe to kLobeCases");
 
 struct LobeCase {
     const char* name;
     BsdfLobe lobe;
 };
 
-inline const std::array<LobeCase, 8> kLobeCases = {{
+// Gold's complex index at the sRGB primaries' dominant wavelengths, roughly (pbrt-v4's metal-Au).
+inline const Rgb kGoldEta(0.143f, 0.374f, 1.442f);
+inline const Rgb kGoldK(3.983f, 2.385f, 1.603f);
+
+inline const std::array<LobeCase, 22> kLobeCases = {{
     {"lambertian", LambertianLobe{Rgb(0.8f, 0.5f, 0.2f)}},
     {"lambertian_white", LambertianLobe{Rgb(1.0f)}},
     {"mirror", SpecularReflectionLobe{Rgb(0.9f, 0.6f, 0.3f)}},
@@ -27,6 +31,20 @@ inline const std::array<LobeCase, 8> kLobeCases = {{
     {"dielectric_below_one", FresnelSpecularLobe{Rgb(1.0f), 1.0f / 1.33f, false}},
     {"transmission", SpecularTransmissionLobe{Rgb(0.7f, 0.8f, 0.9f), 1.5f}},
     {"transmission_diamond", SpecularTransmissionLobe{Rgb(1.0f), 2.4f}},
+    {"conductor_smooth", ConductorLobe{TrowbridgeReitz(0.0f), kGoldEta, kGoldK}},
+    {"conductor_0.01", ConductorLobe{TrowbridgeReitz(0.01f), kGoldEta, kGoldK}},
+    {"conductor_0.1", ConductorLobe{TrowbridgeReitz(0.1f), kGoldEta, kGoldK}},
+    {"conductor_0.3", ConductorLobe{TrowbridgeReitz(0.3f), kGoldEta, kGoldK}},
+    {"conductor_0.8", ConductorLobe{TrowbridgeReitz(0.8f), kGoldEta, kGoldK}},
+    {"conductor_anisotropic", ConductorLobe{TrowbridgeReitz(0.05f, 0.4f), kGoldEta, kGoldK}},
+    {"dielectric_smooth", DielectricLobe{Rgb(1.0f, 0.9f, 0.8f), 1.5f, TrowbridgeReitz(0.0f)}},
+    {"dielectric_0.1", DielectricLobe{Rgb(1.0f), 1.5f, TrowbridgeReitz(0.1f)}},
+    {"dielectric_0.3", DielectricLobe{Rgb(1.0f, 0.9f, 0.8f), 1.5f, TrowbridgeReitz(0.3f)}},
+    {"dielectric_below_one_0.1", DielectricLobe{Rgb(1.0f), 1.0f / 1.5f, TrowbridgeReitz(0.1f)}},
+    {"dielectric_below_one_0.3", DielectricLobe{Rgb(1.0f), 1.0f / 1.5f, TrowbridgeReitz(0.3f)}},
+    {"dielectric_anisotropic", DielectricLobe{Rgb(1.0f), 1.5f, TrowbridgeReitz(0.05f, 0.4f)}},
+    {"thin_dielectric", ThinDielectricLobe{1.5f}},
+    {"thin_dielectric_diamond", ThinDielectricLobe{2.4f}},
 }};
 
 // The unit direction at polar cosine cos_theta and azimuth phi (local frame, z = normal).
@@ -35,10 +53,10 @@ inline Vec3f direction(float cos_theta, float phi) {
     return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
 }
 
-// Outgoing directions on both sides, from normal to grazing (cos theta = +-0.001).
+// Outgoing directions on both sides, from normal to grazing (cos theta = +-0.05, +-0.001).
 inline std::vector<Vec3f> probe_directions() {
     std::vector<Vec3f> out;
-    for (float c : {1.0f, 0.9f, 0.6f, 0.3f, 0.1f, 0.001f})
+    for (float c : {1.0f, 0.9f, 0.6f, 0.3f, 0.1f, 0.05f, 0.001f})
         for (float sign : {1.0f, -1.0f}) out.push_back(direction(sign * c, 0.4f + 2.0f * c));
     return out;
 }

@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "candela/core/platform.h"
+#include "candela/math/color.h"
+#include "candela/math/complex.h"
 #include "candela/math/constants.h"
 #include "candela/math/vec.h"
 
@@ -53,6 +55,28 @@ CANDELA_HD inline float fresnel_dielectric(float cos_theta_i, float eta) {
     float r_parallel = (eta * cos_theta_i - cos_t) / (eta * cos_theta_i + cos_t);
     float r_perpendicular = (cos_theta_i - eta * cos_t) / (cos_theta_i + eta * cos_t);
     return 0.5f * (r_parallel * r_parallel + r_perpendicular * r_perpendicular);
+}
+
+// The fraction of unpolarized light a conductor of complex index eta + i k (relative to the
+// medium it faces) reflects, for incidence at cos_theta_i (clamped to [0, 1]: a conductor is
+// only ever lit from outside). The Fresnel equations with a complex refracted cosine, averaging
+// |r_parallel|^2 and |r_perpendicular|^2 (Born & Wolf 14.2; pbrt-v4 FrComplex). k = 0 gives
+// fresnel_dielectric.
+CANDELA_HD inline float fresnel_complex(float cos_theta_i, float eta, float k) {
+    cos_theta_i = clamp(cos_theta_i, 0.0f, 1.0f);
+    Complex n(eta, k);
+    // Snell's law with a complex index: sin^2(theta_t) = sin^2(theta_i) / n^2.
+    Complex sin2_t = Complex(1.0f - cos_theta_i * cos_theta_i) / (n * n);
+    Complex cos_t = sqrt(Complex(1.0f) - sin2_t);
+    Complex cos_i(cos_theta_i);
+    Complex r_parallel = (n * cos_i - cos_t) / (n * cos_i + cos_t);
+    Complex r_perpendicular = (cos_i - n * cos_t) / (cos_i + n * cos_t);
+    return 0.5f * (norm(r_parallel) + norm(r_perpendicular));
+}
+
+// fresnel_complex per colour channel.
+CANDELA_HD inline Color fresnel_complex(float cos_theta_i, const Color& eta, const Color& k) {
+    return map_channels(eta, k, [&](float e, float kk) { return fresnel_complex(cos_theta_i, e, kk); });
 }
 
 // Reflectance at normal incidence, ((eta - 1) / (eta + 1))^2: the same from both sides.
