@@ -18,7 +18,7 @@ namespace {
 constexpr TransportMode kRadiance = TransportMode::kRadiance;
 
 // The chi-square tests in this file, for the Sidak correction.
-constexpr int kChi2Tests = 28;
+constexpr int kChi2Tests = 31;
 
 Bsdf bsdf_of(std::initializer_list<BsdfLobe> lobes) {
     Bsdf b;

@@ -65,9 +65,9 @@ struct TrowbridgeReitz {
     CANDELA_HD float g1(const Vec3f& w) const { return 1.0f / (1.0f + lambda(w)); }
 
     // Height-correlated masking-shadowing G(wo, wi) = 1 / (1 + Lambda(wo) + Lambda(wi)) (Heitz
-    // 2014, eq. 99).
+    // 2014, eq. 99). The Lambdas are added first so that G is exactly symmetric.
     CANDELA_HD float g(const Vec3f& wo, const Vec3f& wi) const {
-        return 1.0f / (1.0f + lambda(wo) + lambda(wi));
+        return 1.0f / (1.0f + (lambda(wo) + lambda(wi)));
     }
 
     // D_w(wm) = G1(w) max(0, w.wm) D(wm) / |cos w|: the density per solid angle of the normals
