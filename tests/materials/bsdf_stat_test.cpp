@@ -260,6 +260,21 @@ TEST(LobeFurnace, EveryLobeSampledGivesItsDirectionalAlbedo) {
     }
 }
 
+TEST(LobeFurnace, PerfectConductorReflectsItsSingleScatteringAlbedo) {
+    // F = 1 (a purely imaginary index): what sampling estimates is the energy that single
+    // scattering keeps, computed independently by quadrature over the microfacet normals; below
+    // 1 at alpha 0.5 and 1 (microfacet_lobes_test.cpp), which is what multiscatter restores.
+    for (float alpha : {0.1f, 0.5f, 1.0f}) {
+        Bsdf b = bsdf_of({ConductorLobe{TrowbridgeReitz(alpha), Color(0.0f), Color(1.0f)}});
+        for (float c : {1.0f, 0.5f, 0.1f, -0.7f}) {
+            Vec3f wo = direction(c, 1.0f);
+            SCOPED_TRACE(testing::Message() << "alpha " << alpha << ", cos " << c);
+            double expected = albedo_by_quadrature(std::get<ConductorLobe>(b.lobes[0]), wo, kRadiance);
+            expect_albedo(directional_albedo(b, wo, kRadiance, 31), expected, 1e-5);
+        }
+    }
+}
+
 TEST(LobeFurnace, LambertianEvalIntegratesToItsAlbedo) {
     // Independent of the sampler: integrate f |cos| over the sphere with uniform directions.
     // The estimator 4 pi f |cos| has variance 5 albedo^2 / 3, bounded here by its measured one.

@@ -139,6 +139,52 @@ TEST(Fresnel, IsReciprocal) {
     }
 }
 
+// Unpolarized reflectance of a conductor of complex index n + i k in the real form (Born & Wolf,
+// Principles of Optics, 14.4; as Mitsuba's fresnel_conductor writes it): with
+// a^2 + b^2 = sqrt((n^2 - k^2 - sin^2)^2 + 4 n^2 k^2) and a^2 = (a^2 + b^2 + n^2 - k^2 - sin^2) / 2,
+// R_s = (a^2 + b^2 - 2 a cos + cos^2) / (a^2 + b^2 + 2 a cos + cos^2) and
+// R_p = R_s (cos^2 (a^2 + b^2) - 2 a cos sin^2 + sin^4) / (cos^2 (a^2 + b^2) + 2 a cos sin^2 + sin^4).
+double conductor_reference(double cos_i, double n, double k) {
+    double c2 = cos_i * cos_i, s2 = 1.0 - c2;
+    double t = n * n - k * k - s2;
+    double a2b2 = std::sqrt(t * t + 4.0 * n * n * k * k);
+    double a = std::sqrt(0.5 * (a2b2 + t));
+    double rs = (a2b2 - 2.0 * a * cos_i + c2) / (a2b2 + 2.0 * a * cos_i + c2);
+    double rp = rs * (c2 * a2b2 - 2.0 * a * cos_i * s2 + s2 * s2) /
+                (c2 * a2b2 + 2.0 * a * cos_i * s2 + s2 * s2);
+    return 0.5 * (rs + rp);
+}
+
+TEST(FresnelComplex, MatchesTheRealFormOfTheConductorEquations) {
+    // Gold, silver, aluminium-like indices, and a weak absorber.
+    const double indices[][2] = {{0.143, 3.983}, {0.155, 4.83}, {1.66, 8.06}, {1.5, 0.1}, {2.9, 3.0}};
+    for (const auto& nk : indices) {
+        for (int i = 0; i <= 100; ++i) {
+            double cos_i = i / 100.0;
+            EXPECT_NEAR(double(fresnel_complex(float(cos_i), float(nk[0]), float(nk[1]))),
+                        conductor_reference(cos_i, nk[0], nk[1]), 2e-6)
+                << "n " << nk[0] << ", k " << nk[1] << ", cos " << cos_i;
+        }
+    }
+}
+
+TEST(FresnelComplex, NormalIncidenceAndLimits) {
+    // ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2) at normal incidence; 1 at grazing.
+    EXPECT_NEAR(fresnel_complex(1.0f, 0.2f, 3.0f), (0.64f + 9.0f) / (1.44f + 9.0f), 1e-6f);
+    EXPECT_NEAR(fresnel_complex(0.0f, 0.2f, 3.0f), 1.0f, 1e-6f);
+    // No absorption: the dielectric's reflectance.
+    for (float c : {1.0f, 0.7f, 0.3f, 0.05f})
+        EXPECT_NEAR(fresnel_complex(c, 1.5f, 0.0f), fresnel_dielectric(c, 1.5f), 1e-6f) << c;
+    // A purely imaginary index reflects everything (both amplitudes have modulus 1).
+    for (float c : {1.0f, 0.5f, 0.01f}) EXPECT_NEAR(fresnel_complex(c, 0.0f, 1.0f), 1.0f, 1e-6f);
+    // Clamped: below the surface counts as grazing.
+    EXPECT_EQ(fresnel_complex(-0.5f, 0.2f, 3.0f), fresnel_complex(0.0f, 0.2f, 3.0f));
+    // Per channel.
+    Color f = fresnel_complex(0.6f, Color(0.2f, 1.5f, 0.0f), Color(3.0f, 0.0f, 1.0f));
+    EXPECT_EQ(f, Color(fresnel_complex(0.6f, 0.2f, 3.0f), fresnel_complex(0.6f, 1.5f, 0.0f),
+                       fresnel_complex(0.6f, 0.0f, 1.0f)));
+}
+
 TEST(Reflect, MirrorsAboutTheNormal) {
     Vec3f w = normalize(Vec3f(0.3f, -0.4f, 0.5f));
     Vec3f r = reflect(w, Vec3f(0, 0, 1));

@@ -53,7 +53,11 @@ struct DielectricLobe {
         // Microfacets seen from behind by wo or wi (possible for a half vector of two arbitrary
         // directions) neither reflect nor refract between them.
         if (wo_dot_wm * cos_o <= 0.0f || wi_dot_wm * cos_i <= 0.0f) return e;
-        float fresnel = fresnel_dielectric(wo_dot_wm, eta);
+        // F is the same from either side. From the denser side near the critical angle, its
+        // refracted cosine sqrt(1 - sin^2 eta'^2) cancels to a few bits: a refraction takes
+        // the cosine on the rarer side (outside when eta > 1).
+        bool wo_rarer = reflection || (cos_o > 0.0f) == (eta > 1.0f);
+        float fresnel = fresnel_dielectric(wo_rarer ? wo_dot_wm : wi_dot_wm, eta);
         float d = distribution.d(wm);
         float g = distribution.g(wo, wi);
         float pdf_wm = distribution.pdf(wo, wm);
