@@ -69,6 +69,74 @@ struct TransmissionParams {
 };
 static_assert(LobeParamsType<TransmissionParams>);
 
-using LobeParams = Variant<DiffuseParams, MirrorParams, DielectricParams, TransmissionParams>;
+// A `roughness`: the Trowbridge-Reitz alpha along the surface's u (dpdu) and v directions.
+struct RoughnessParams {
+    FloatParam alpha_u{0.0f};
+    FloatParam alpha_v{0.0f};
+
+    CANDELA_HD TrowbridgeReitz distribution(const TextureSet& t, const TextureContext& ctx) const {
+        return TrowbridgeReitz(t.eval(alpha_u, ctx), t.eval(alpha_v, ctx));
+    }
+    CANDELA_HD bool is_textured() const { return alpha_u.is_textured() || alpha_v.is_textured(); }
+};
+
+// `conductor` by its complex index of refraction eta + i k, per channel.
+struct ConductorParams {
+    ColorParam eta{Color(1.0f)};
+    ColorParam k{Color(0.0f)};
+    RoughnessParams roughness;
+
+    CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
+        return ConductorLobe{roughness.distribution(t, ctx), t.eval(eta, ctx), t.eval(k, ctx)};
+    }
+    CANDELA_HD bool is_textured() const {
+        return eta.is_textured() || k.is_textured() || roughness.is_textured();
+    }
+};
+static_assert(LobeParamsType<ConductorParams>);
+
+// `conductor` by its reflectance at normal incidence (pbrt-v4's artist-friendly form): eta = 1
+// and k = 2 sqrt(r) / sqrt(1 - r), which makes F(normal) = k^2 / (4 + k^2) = r exactly; r is
+// clamped to 0.9999 first, as pbrt-v4's ConductorMaterial does, so that k stays finite.
+struct ConductorReflectanceParams {
+    ColorParam reflectance{Color(1.0f)};
+    RoughnessParams roughness;
+
+    CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
+        Color r = clamp_channels(t.eval(reflectance, ctx), 0.0f, 0.9999f);
+        Color k = safe_div(sqrt_channels(r) * 2.0f, sqrt_channels(Color(1.0f) - r));
+        return ConductorLobe{roughness.distribution(t, ctx), Color(1.0f), k};
+    }
+    CANDELA_HD bool is_textured() const { return reflectance.is_textured() || roughness.is_textured(); }
+};
+static_assert(LobeParamsType<ConductorReflectanceParams>);
+
+// `dielectric` with a `roughness`: microfacet glass (DielectricLobe, smooth below alpha 1e-3).
+struct RoughDielectricParams {
+    float ior = 1.5f;
+    ColorParam tint{Color(1.0f)};
+    RoughnessParams roughness;
+
+    CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
+        return DielectricLobe{t.eval(tint, ctx), ior, roughness.distribution(t, ctx)};
+    }
+    CANDELA_HD bool is_textured() const { return tint.is_textured() || roughness.is_textured(); }
+};
+static_assert(LobeParamsType<RoughDielectricParams>);
+
+// `thin_dielectric`: a pane of glass of index `ior`.
+struct ThinDielectricParams {
+    float ior = 1.5f;
+
+    CANDELA_HD BsdfLobe lobe(const TextureSet&, const TextureContext&) const {
+        return ThinDielectricLobe{ior};
+    }
+    CANDELA_HD bool is_textured() const { return false; }
+};
+static_assert(LobeParamsType<ThinDielectricParams>);
+
+using LobeParams = Variant<DiffuseParams, MirrorParams, DielectricParams, TransmissionParams,
+                           ConductorParams, ConductorReflectanceParams, RoughDielectricParams,
+                           ThinDielectricParams>;
 
 }  // namespace candela

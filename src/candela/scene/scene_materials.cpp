@@ -14,15 +14,47 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 5> kMaterialTypes = {"diffuse", "mirror", "dielectric",
-                                                          "transmission", "mix"};
+constexpr std::array<std::string_view, 7> kMaterialTypes = {
+    "conductor", "diffuse", "dielectric", "mirror", "mix", "thin_dielectric", "transmission"};
 // The types a `mix` may combine: every material type but `mix` itself.
-constexpr std::array<std::string_view, 4> kLobeMaterialTypes = {"diffuse", "mirror", "dielectric",
-                                                              "transmission"};
+constexpr std::array<std::string_view, 6> kLobeMaterialTypes = {
+    "conductor", "diffuse", "dielectric", "mirror", "thin_dielectric", "transmission"};
 constexpr std::array<std::string_view, 2> kFresnelNames = {"exact", "schlick"};
 constexpr std::array<std::string_view, 2> kNormalMapConventions = {"opengl", "directx"};
 // Reflectances above 1 would create energy; negative ones are meaningless.
 constexpr Bounds kReflectance = Bounds::closed(0, 1);
+// A Trowbridge-Reitz alpha: 0 is smooth; there is no upper limit (pbrt-v4 sets none either).
+constexpr Bounds kRoughness = Bounds::at_least(0);
+
+// `roughness`: one alpha for both directions, or [alpha_u, alpha_v]; each a number or texture.
+RoughnessParams read_roughness(const JsonCursor& c, Scene& scene) {
+    if (!c.is_array()) {
+        FloatParam alpha = read_float_param(c, scene, kRoughness);
+        return {alpha, alpha};
+    }
+    std::vector<JsonCursor> pair = c.elements(2, "a roughness: a number or [alpha_u, alpha_v]");
+    return {read_float_param(pair[0], scene, kRoughness), read_float_param(pair[1], scene, kRoughness)};
+}
+
+// True when the roughness is the constant 0: the smooth lobe of before roughness existed.
+bool is_zero(const RoughnessParams& r) {
+    return !r.is_textured() && r.alpha_u.value == 0.0f && r.alpha_v.value == 0.0f;
+}
+
+// `conductor`: eta and k, or reflectance (not both, as pbrt-v4), and roughness.
+LobeParams read_conductor(JsonCursor& c, Scene& scene) {
+    RoughnessParams roughness;
+    if (auto v = c.get("roughness")) roughness = read_roughness(*v, scene);
+    std::optional<JsonCursor> eta = c.get("eta"), k = c.get("k"), reflectance = c.get("reflectance");
+    if (reflectance) {
+        if (eta || k)
+            (eta ? *eta : *k).fail("give \"eta\" and \"k\" or \"reflectance\", not both");
+        return ConductorReflectanceParams{read_color_param(*reflectance, scene, kReflectance), roughness};
+    }
+    if (!eta || !k) c.fail("a conductor needs \"eta\" and \"k\", or \"reflectance\"");
+    return ConductorParams{read_color_param(*eta, scene, Bounds::at_least(0)),
+                           read_color_param(*k, scene, Bounds::at_least(0)), roughness};
+}
 
 // The lobe of a material of one of kLobeMaterialTypes, whose `type` (already read) is `type`.
 LobeParams read_lobe(JsonCursor& c, std::string_view type, Scene& scene) {
@@ -36,14 +68,21 @@ LobeParams read_lobe(JsonCursor& c, std::string_view type, Scene& scene) {
         if (auto v = c.get("albedo")) p.albedo = read_color_param(*v, scene, kReflectance);
         return p;
     }
+    if (type == "conductor") return read_conductor(c, scene);
     float ior = 1.5f;
-    ColorParam tint{Color(1.0f)};
     if (auto v = c.get("ior")) ior = v->number_f(Bounds::above(0));
+    if (type == "thin_dielectric") return ThinDielectricParams{ior};
+    ColorParam tint{Color(1.0f)};
     if (auto v = c.get("tint")) tint = read_color_param(*v, scene, kReflectance);
     if (type == "transmission") return TransmissionParams{ior, tint};
-    bool schlick = false;
-    if (auto v = c.get("fresnel")) schlick = v->choice("fresnel", kFresnelNames) == "schlick";
-    return DielectricParams{ior, tint, schlick};
+    std::optional<JsonCursor> fresnel = c.get("fresnel");
+    bool schlick = fresnel && fresnel->choice("fresnel", kFresnelNames) == "schlick";
+    RoughnessParams roughness;
+    if (auto v = c.get("roughness")) roughness = read_roughness(*v, scene);
+    // Roughness 0 keeps the smooth lobe of version 1 (and its images, bit for bit).
+    if (is_zero(roughness)) return DielectricParams{ior, tint, schlick};
+    if (schlick) fresnel->fail("fresnel \"schlick\" is for a smooth dielectric (roughness 0)");
+    return RoughDielectricParams{ior, tint, roughness};
 }
 
 // `mix`: 1 to Bsdf::kMaxLobes materials of the other types, their lobes in one material. Mixes do
