@@ -64,6 +64,25 @@ TEST(SceneMaterials, RoughnessPairIsAlphaAlongUThenV) {
     EXPECT_EQ(negative.message(), "expected a number >= 0, got -1");
 }
 
+TEST(SceneMaterials, OnlyARoughnessPairThatDiffersMakesTheMaterialAnisotropic) {
+    // An anisotropic lobe needs the frame's x axis along dpdu (render/shading_frame.h).
+    const char* conductor = R"({"type": "conductor", "eta": 1, "k": 1, "roughness": )";
+    EXPECT_TRUE(load_material(std::string(conductor) + "[0.05, 0.4]}").materials[0].anisotropic);
+    EXPECT_FALSE(load_material(std::string(conductor) + "[0.2, 0.2]}").materials[0].anisotropic);
+    EXPECT_FALSE(load_material(std::string(conductor) + "0.2}").materials[0].anisotropic);
+    EXPECT_FALSE(load_material(std::string(conductor) +
+                               R"({"type": "checkerboard", "color0": 0.1, "color1": 0.3}})")
+                     .materials[0].anisotropic);
+    EXPECT_TRUE(load_material(std::string(conductor) +
+                              R"([{"type": "checkerboard", "color0": 0.1, "color1": 0.3}, 0.1]})")
+                    .materials[0].anisotropic);
+    EXPECT_TRUE(load_material(R"({"type": "dielectric", "roughness": [0.1, 0.3]})").materials[0].anisotropic);
+    EXPECT_TRUE(load_material(R"({"type": "conductor", "reflectance": 1, "roughness": [0.1, 0.3]})")
+                    .materials[0].anisotropic);
+    EXPECT_TRUE(load_material(R"({"type": "conductor", "reflectance": 1, "roughness": [0.1, 0.3]})")
+                    .materials[0].needs_shading_geometry);
+}
+
 TEST(SceneMaterials, ConductorReflectanceIsPbrtsArtistFriendlyForm) {
     // eta = 1 and k = 2 sqrt(r) / sqrt(1 - r): the lobe reflects r at normal incidence.
     const auto c = only_lobe<ConductorLobe>(
@@ -91,7 +110,7 @@ TEST(SceneMaterials, ConductorNeedsEtaAndKOrReflectance) {
     EXPECT_EQ(material_error(R"({"type": "conductor", "eta": 1, "k": -1})").message(),
               "expected a number >= 0, got -1");
     EXPECT_EQ(material_error(R"({"type": "conductor", "eta": 1, "k": 1, "ior": 1.5})").message(),
-              "unknown key \"ior\"; expected one of: eta, k, reflectance, roughness, type");
+              "unknown key \"ior\"; expected one of: alpha, bump_map, eta, k, normal_map, normal_map_convention, reflectance, roughness, type");
 }
 
 TEST(SceneMaterials, ConductorParametersMayBeTextures) {
@@ -147,7 +166,7 @@ TEST(SceneMaterials, ThinDielectricIorIsRead) {
     EXPECT_EQ(material_error(R"({"type": "thin_dielectric", "ior": 0})").message(),
               "expected a number > 0, got 0");
     EXPECT_EQ(material_error(R"({"type": "thin_dielectric", "tint": 0.5})").message(),
-              "unknown key \"tint\"; expected one of: ior, type");
+              "unknown key \"tint\"; expected one of: alpha, bump_map, ior, normal_map, normal_map_convention, type");
 }
 
 TEST(SceneMaterials, NewTypesMixWithTheOthers) {

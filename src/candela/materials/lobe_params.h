@@ -78,6 +78,11 @@ struct RoughnessParams {
         return TrowbridgeReitz(t.eval(alpha_u, ctx), t.eval(alpha_v, ctx));
     }
     CANDELA_HD bool is_textured() const { return alpha_u.is_textured() || alpha_v.is_textured(); }
+    // Whether alpha may differ between u and v somewhere (the shading frame must follow dpdu).
+    CANDELA_HD bool is_anisotropic() const {
+        if (alpha_u.texture != alpha_v.texture) return true;
+        return !alpha_u.is_textured() && alpha_u.value != alpha_v.value;
+    }
 };
 
 // `conductor` by its complex index of refraction eta + i k, per channel.
@@ -92,6 +97,7 @@ struct ConductorParams {
     CANDELA_HD bool is_textured() const {
         return eta.is_textured() || k.is_textured() || roughness.is_textured();
     }
+    CANDELA_HD bool is_anisotropic() const { return roughness.is_anisotropic(); }
 };
 static_assert(LobeParamsType<ConductorParams>);
 
@@ -108,6 +114,7 @@ struct ConductorReflectanceParams {
         return ConductorLobe{roughness.distribution(t, ctx), Color(1.0f), k};
     }
     CANDELA_HD bool is_textured() const { return reflectance.is_textured() || roughness.is_textured(); }
+    CANDELA_HD bool is_anisotropic() const { return roughness.is_anisotropic(); }
 };
 static_assert(LobeParamsType<ConductorReflectanceParams>);
 
@@ -121,6 +128,7 @@ struct RoughDielectricParams {
         return DielectricLobe{t.eval(tint, ctx), ior, roughness.distribution(t, ctx)};
     }
     CANDELA_HD bool is_textured() const { return tint.is_textured() || roughness.is_textured(); }
+    CANDELA_HD bool is_anisotropic() const { return roughness.is_anisotropic(); }
 };
 static_assert(LobeParamsType<RoughDielectricParams>);
 
