@@ -7,6 +7,7 @@
 #include "candela/materials/dielectric.h"
 #include "candela/materials/fresnel_specular.h"
 #include "candela/materials/lambertian.h"
+#include "candela/materials/layered.h"
 #include "candela/materials/specular_reflection.h"
 #include "candela/materials/specular_transmission.h"
 #include "candela/materials/thin_dielectric.h"
@@ -14,6 +15,7 @@
 namespace candela {
 
 using BsdfLobe = Variant<LambertianLobe, SpecularReflectionLobe, FresnelSpecularLobe,
-                         SpecularTransmissionLobe, ConductorLobe, DielectricLobe, ThinDielectricLobe>;
+                         SpecularTransmissionLobe, ConductorLobe, DielectricLobe, ThinDielectricLobe,
+                         CoatedDiffuseLobe, CoatedConductorLobe>;
 
 }  // namespace candela
