@@ -11,7 +11,15 @@
 namespace candela::test {
 
 // A new lobe type must be added to kLobeCases (and thereby to every test that runs over them).
-static_assert(std::variant_size_v<BsdfLobe> == 7, "add the new lobe to kLobeCases");
+static_assert(std::variant_size_v<BsdfLobe> == 9, "add the new lobe to kLobeCases");
+
+// Lobes whose eval() and pdf() are stochastic estimates (materials/layered.h): sample() agrees
+// with them in expectation only, which layered_stat_test.cpp checks; the generic tests check of
+// them what holds sample by sample.
+template <class T>
+inline constexpr bool kIsLayered = false;
+template <class Base>
+inline constexpr bool kIsLayered<LayeredLobe<Base>> = true;
 
 struct LobeCase {
     const char* name;
@@ -22,7 +30,7 @@ struct LobeCase {
 inline const Rgb kGoldEta(0.143f, 0.374f, 1.442f);
 inline const Rgb kGoldK(3.983f, 2.385f, 1.603f);
 
-inline const std::array<LobeCase, 22> kLobeCases = {{
+inline const std::array<LobeCase, 27> kLobeCases = {{
     {"lambertian", LambertianLobe{Rgb(0.8f, 0.5f, 0.2f)}},
     {"lambertian_white", LambertianLobe{Rgb(1.0f)}},
     {"mirror", SpecularReflectionLobe{Rgb(0.9f, 0.6f, 0.3f)}},
@@ -45,6 +53,25 @@ inline const std::array<LobeCase, 22> kLobeCases = {{
     {"dielectric_anisotropic", DielectricLobe{Rgb(1.0f), 1.5f, TrowbridgeReitz(0.05f, 0.4f)}},
     {"thin_dielectric", ThinDielectricLobe{1.5f}},
     {"thin_dielectric_diamond", ThinDielectricLobe{2.4f}},
+    // Coated lobes: coat, base, medium albedo, thickness, g, max depth, walks per eval.
+    {"coated_diffuse_smooth", CoatedDiffuseLobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)},
+                                                LambertianLobe{Rgb(0.7f, 0.3f, 0.2f)}, Rgb(0.0f),
+                                                0.01f, 0.0f, 10, 1}},
+    {"coated_diffuse_rough_medium", CoatedDiffuseLobe{CoatInterface{1.5f, TrowbridgeReitz(0.3f)},
+                                                      LambertianLobe{Rgb(0.5f, 0.6f, 0.7f)},
+                                                      Rgb(0.8f, 0.5f, 0.3f), 0.1f, 0.3f, 10, 2}},
+    {"coated_conductor_smooth", CoatedConductorLobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)},
+                                                    ConductorLobe{TrowbridgeReitz(0.0f), kGoldEta / 1.5f,
+                                                                  kGoldK / 1.5f},
+                                                    Rgb(0.0f), 0.01f, 0.0f, 10, 1}},
+    {"coated_conductor_rough", CoatedConductorLobe{CoatInterface{1.5f, TrowbridgeReitz(0.1f)},
+                                                   ConductorLobe{TrowbridgeReitz(0.3f), kGoldEta / 1.5f,
+                                                                 kGoldK / 1.5f},
+                                                   Rgb(0.0f), 0.01f, 0.0f, 10, 1}},
+    {"coated_conductor_anisotropic_medium",
+     CoatedConductorLobe{CoatInterface{1.33f, TrowbridgeReitz(0.2f)},
+                         ConductorLobe{TrowbridgeReitz(0.05f, 0.3f), kGoldEta / 1.33f, kGoldK / 1.33f},
+                         Rgb(0.9f), 0.5f, -0.3f, 10, 1}},
 }};
 
 // The unit direction at polar cosine cos_theta and azimuth phi (local frame, z = normal).

@@ -6,7 +6,9 @@
 //
 // A new lobe kind adds its parameter struct here (checked by LobeParamsType) and its alternative
 // to LobeParams; the scene loader (scene/scene_materials.cpp) reads it.
+#include <cmath>
 #include <concepts>
+#include <cstdint>
 
 #include "candela/core/variant.h"
 #include "candela/materials/bsdf_lobes.h"
@@ -101,17 +103,22 @@ struct ConductorParams {
 };
 static_assert(LobeParamsType<ConductorParams>);
 
-// `conductor` by its reflectance at normal incidence (pbrt-v4's artist-friendly form): eta = 1
-// and k = 2 sqrt(r) / sqrt(1 - r), which makes F(normal) = k^2 / (4 + k^2) = r exactly; r is
-// clamped to 0.9999 first, as pbrt-v4's ConductorMaterial does, so that k stays finite.
+// The absorption k of a conductor of eta = 1 that reflects r at normal incidence (pbrt-v4's
+// artist-friendly form): k = 2 sqrt(r) / sqrt(1 - r), which makes F(normal) = k^2 / (4 + k^2) = r
+// exactly; r is clamped to 0.9999 first, as pbrt-v4's materials do, so that k stays finite.
+CANDELA_HD inline Color conductor_k_for_reflectance(const Color& reflectance) {
+    Color r = clamp_channels(reflectance, 0.0f, 0.9999f);
+    return safe_div(sqrt_channels(r) * 2.0f, sqrt_channels(Color(1.0f) - r));
+}
+
+// `conductor` by its reflectance at normal incidence: eta = 1, k = conductor_k_for_reflectance.
 struct ConductorReflectanceParams {
     ColorParam reflectance{Color(1.0f)};
     RoughnessParams roughness;
 
     CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
-        Color r = clamp_channels(t.eval(reflectance, ctx), 0.0f, 0.9999f);
-        Color k = safe_div(sqrt_channels(r) * 2.0f, sqrt_channels(Color(1.0f) - r));
-        return ConductorLobe{roughness.distribution(t, ctx), Color(1.0f), k};
+        return ConductorLobe{roughness.distribution(t, ctx), Color(1.0f),
+                             conductor_k_for_reflectance(t.eval(reflectance, ctx))};
     }
     CANDELA_HD bool is_textured() const { return reflectance.is_textured() || roughness.is_textured(); }
     CANDELA_HD bool is_anisotropic() const { return roughness.is_anisotropic(); }
@@ -143,8 +150,81 @@ struct ThinDielectricParams {
 };
 static_assert(LobeParamsType<ThinDielectricParams>);
 
+
+// The parameters both coated materials share: the coat and the medium under it (pbrt-v4's
+// CoatedDiffuseMaterial and CoatedConductorMaterial; scene keys in docs/SCENE_FORMAT.md).
+struct CoatParams {
+    RoughnessParams roughness;  // the coat's (pbrt-v4's uroughness, vroughness, not remapped)
+    float ior = 1.5f;           // the coat's index over the outside's; pbrt-v4's 0 means 1
+    FloatParam thickness{0.01f};
+    ColorParam medium_albedo{Color(0.0f)};  // pbrt-v4's `albedo`
+    FloatParam g{0.0f};
+    uint16_t max_depth = 10;
+    uint16_t n_samples = 1;
+
+    // Fills the coat and medium of `lobe` at ctx, clamping as pbrt-v4's GetBxDF does.
+    template <class Lobe>
+    CANDELA_HD void apply(Lobe& lobe, const TextureSet& t, const TextureContext& ctx) const {
+        lobe.coat = CoatInterface{ior == 0.0f ? 1.0f : ior, roughness.distribution(t, ctx)};
+        lobe.medium_albedo = clamp_channels(t.eval(medium_albedo, ctx), 0.0f, 1.0f);
+        lobe.thickness = t.eval(thickness, ctx);
+        lobe.g = clamp(t.eval(g, ctx), -1.0f, 1.0f);
+        lobe.max_depth = max_depth;
+        lobe.n_samples = n_samples;
+    }
+    CANDELA_HD bool is_textured() const {
+        return roughness.is_textured() || thickness.is_textured() || medium_albedo.is_textured() ||
+               g.is_textured();
+    }
+};
+
+// `coated_diffuse`: a dielectric coat over a Lambertian base of reflectance `albedo`.
+struct CoatedDiffuseParams {
+    CoatParams coat;
+    ColorParam albedo{Color(0.5f)};  // the base's reflectance (pbrt-v4's `reflectance`)
+
+    CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
+        CoatedDiffuseLobe l;
+        coat.apply(l, t, ctx);
+        l.base = LambertianLobe{clamp_channels(t.eval(albedo, ctx), 0.0f, 1.0f)};
+        return l;
+    }
+    CANDELA_HD bool is_textured() const { return coat.is_textured() || albedo.is_textured(); }
+};
+static_assert(LobeParamsType<CoatedDiffuseParams>);
+
+// `coated_conductor`: a dielectric coat over a conductor given by its complex index eta + i k
+// relative to the outside (divided by the coat's index here, as pbrt-v4 does), or by its
+// normal-incidence `reflectance` (eta = 1, k = conductor_k_for_reflectance, before that
+// division).
+struct CoatedConductorParams {
+    CoatParams coat;
+    // pbrt-v4's default base, copper: its metal-Cu-eta and metal-Cu-k spectra
+    // interpolated at 650, 550 and 450 nm for red, green and blue.
+    ColorParam conductor_eta{Color(0.216561f, 0.958162f, 1.165808f)};
+    ColorParam conductor_k{Color(3.637741f, 2.577065f, 2.393857f)};
+    ColorParam reflectance{Color(0.0f)};
+    bool from_reflectance = false;  // use `reflectance` instead of eta and k
+    RoughnessParams conductor_roughness;
+
+    CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
+        CoatedConductorLobe l;
+        coat.apply(l, t, ctx);
+        Color eta = from_reflectance ? Color(1.0f) : t.eval(conductor_eta, ctx);
+        Color k = from_reflectance ? conductor_k_for_reflectance(t.eval(reflectance, ctx)) : t.eval(conductor_k, ctx);
+        float coat_eta = l.coat.eta;
+        l.base = ConductorLobe{conductor_roughness.distribution(t, ctx), eta / coat_eta, k / coat_eta};
+        return l;
+    }
+    CANDELA_HD bool is_textured() const {
+        return coat.is_textured() || conductor_eta.is_textured() || conductor_k.is_textured() ||
+               reflectance.is_textured() || conductor_roughness.is_textured();
+    }
+};
+static_assert(LobeParamsType<CoatedConductorParams>);
+
 using LobeParams = Variant<DiffuseParams, MirrorParams, DielectricParams, TransmissionParams,
                            ConductorParams, ConductorReflectanceParams, RoughDielectricParams,
-                           ThinDielectricParams>;
+                           ThinDielectricParams, CoatedDiffuseParams, CoatedConductorParams>;
 
 }  // namespace candela

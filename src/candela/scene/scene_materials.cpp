@@ -14,11 +14,13 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 7> kMaterialTypes = {
-    "conductor", "diffuse", "dielectric", "mirror", "mix", "thin_dielectric", "transmission"};
+constexpr std::array<std::string_view, 9> kMaterialTypes = {
+    "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "mirror", "mix",
+    "thin_dielectric", "transmission"};
 // The types a `mix` may combine: every material type but `mix` itself.
-constexpr std::array<std::string_view, 6> kLobeMaterialTypes = {
-    "conductor", "diffuse", "dielectric", "mirror", "thin_dielectric", "transmission"};
+constexpr std::array<std::string_view, 8> kLobeMaterialTypes = {
+    "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "mirror",
+    "thin_dielectric", "transmission"};
 constexpr std::array<std::string_view, 2> kFresnelNames = {"exact", "schlick"};
 constexpr std::array<std::string_view, 2> kNormalMapConventions = {"opengl", "directx"};
 // Reflectances above 1 would create energy; negative ones are meaningless.
@@ -56,8 +58,50 @@ LobeParams read_conductor(JsonCursor& c, Scene& scene) {
                            read_color_param(*k, scene, Bounds::at_least(0)), roughness};
 }
 
+// What both coated materials share: the coat (its roughness under `roughness_key`) and the
+// medium beneath it. pbrt-v4's names: uroughness/vroughness (or interface.*), eta (or
+// interface.eta), thickness, albedo, g, maxdepth, nsamples.
+CoatParams read_coat(JsonCursor& c, Scene& scene, std::string_view roughness_key) {
+    CoatParams p;
+    if (auto v = c.get(roughness_key)) p.roughness = read_roughness(*v, scene);
+    if (auto v = c.get("ior")) p.ior = v->number_f(Bounds::above(0));
+    if (auto v = c.get("thickness")) p.thickness = read_float_param(*v, scene, Bounds::at_least(0));
+    if (auto v = c.get("medium_albedo")) p.medium_albedo = read_color_param(*v, scene, kReflectance);
+    if (auto v = c.get("g")) p.g = read_float_param(*v, scene, Bounds::closed(-1, 1));
+    if (auto v = c.get("maxdepth")) p.max_depth = static_cast<uint16_t>(v->integer(Bounds::closed(0, 65535)));
+    if (auto v = c.get("nsamples")) p.n_samples = static_cast<uint16_t>(v->integer(Bounds::closed(1, 65535)));
+    return p;
+}
+
+CoatedDiffuseParams read_coated_diffuse(JsonCursor& c, Scene& scene) {
+    CoatedDiffuseParams p;
+    p.coat = read_coat(c, scene, "roughness");
+    if (auto v = c.get("albedo")) p.albedo = read_color_param(*v, scene, kReflectance);
+    return p;
+}
+
+CoatedConductorParams read_coated_conductor(JsonCursor& c, Scene& scene) {
+    CoatedConductorParams p;
+    p.coat = read_coat(c, scene, "interface_roughness");
+    if (auto v = c.get("conductor_roughness")) p.conductor_roughness = read_roughness(*v, scene);
+    std::optional<JsonCursor> eta = c.get("conductor_eta"), k = c.get("conductor_k");
+    if (auto r = c.get("reflectance")) {
+        // pbrt-v4 refuses both forms of the base's colour at once; without either, the base is
+        // its default copper (each of eta and k defaults on its own, as in pbrt-v4).
+        if (eta || k)
+            (eta ? *eta : *k).fail("give \"conductor_eta\" and \"conductor_k\" or \"reflectance\", not both");
+        p.reflectance = read_color_param(*r, scene, kReflectance);
+        p.from_reflectance = true;
+    }
+    if (eta) p.conductor_eta = read_color_param(*eta, scene, Bounds::above(0));
+    if (k) p.conductor_k = read_color_param(*k, scene, Bounds::at_least(0));
+    return p;
+}
+
 // The lobe of a material of one of kLobeMaterialTypes, whose `type` (already read) is `type`.
 LobeParams read_lobe(JsonCursor& c, std::string_view type, Scene& scene) {
+    if (type == "coated_diffuse") return read_coated_diffuse(c, scene);
+    if (type == "coated_conductor") return read_coated_conductor(c, scene);
     if (type == "diffuse") {
         DiffuseParams p;
         if (auto v = c.get("albedo")) p.albedo = read_color_param(*v, scene, kReflectance);
