@@ -111,6 +111,11 @@ TEST(Bsdf, SampleAgreesWithEvalAndPdfForEveryPairOfLobes) {
                     if (s->is_delta) {
                         // A discrete probability, of which the lobe choice took half.
                         EXPECT_LE(s->pdf, 0.5f);
+                    } else if (bsdf.has_estimated_lobe()) {
+                        // The chosen lobe's own weight (an estimate: its expectation is checked
+                        // in layered_stat_test.cpp), with the mixture's pdf for MIS.
+                        EXPECT_EQ(s->pdf, bsdf.pdf(wo, s->wi));
+                        EXPECT_TRUE(s->f.is_finite());
                     } else {
                         EXPECT_EQ(s->f, bsdf.eval(wo, s->wi, kRadiance));
                         EXPECT_EQ(s->pdf, bsdf.pdf(wo, s->wi));

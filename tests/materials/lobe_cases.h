@@ -17,9 +17,7 @@ static_assert(std::variant_size_v<BsdfLobe> == 9, "add the new lobe to kLobeCase
 // with them in expectation only, which layered_stat_test.cpp checks; the generic tests check of
 // them what holds sample by sample.
 template <class T>
-inline constexpr bool kIsLayered = false;
-template <class Base>
-inline constexpr bool kIsLayered<LayeredLobe<Base>> = true;
+inline constexpr bool kIsLayered = kIsLayeredLobe<T>;
 
 struct LobeCase {
     const char* name;

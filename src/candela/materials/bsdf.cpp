@@ -49,10 +49,28 @@ CANDELA_HD std::optional<BsdfSample> Bsdf::sample(const Vec3f& wo, float uc, con
         // delta lobes, meet it with probability 0). The lobe choice divides the probability.
         if (lobe_count > 1) s->pdf /= n;
     } else if (lobe_count > 1) {
-        s->f = eval(wo, s->wi, mode);
-        s->pdf = pdf(wo, s->wi);
+        if (!has_estimated_lobe()) {
+            s->f = eval(wo, s->wi, mode);
+            s->pdf = pdf(wo, s->wi);
+        } else {
+            // A coated lobe's pdf() is no density of its sampling, so the balance above would
+            // be biased. Each lobe's sample counts alone instead, its weight f / pdf divided by
+            // the probability 1/n of choosing it (unbiased, as the lobes' integrals add); the
+            // sample reports the mixture's pdf() for MIS with light sampling, which stays
+            // unbiased because pdf() is a fixed function of the directions.
+            float p = pdf(wo, s->wi);
+            s->f = s->f * (n * p / s->pdf);
+            s->pdf = p;
+        }
     }
     return s;
+}
+
+CANDELA_HD bool Bsdf::has_estimated_lobe() const {
+    for (uint32_t k = 0; k < lobe_count; ++k)
+        if (visit([](const auto& lobe) { return kIsLayeredLobe<std::decay_t<decltype(lobe)>>; }, lobes[k]))
+            return true;
+    return false;
 }
 
 CANDELA_HD bool Bsdf::is_delta_only() const {

@@ -3,8 +3,9 @@
 // shading frame, z = shading normal pointing to the surface's front; wo and wi point away from
 // the surface. f excludes the cosine. Sampling picks a lobe uniformly and, for a non-delta lobe,
 // returns the sum of all lobes' f and the average of all lobes' pdfs (delta lobes' pdf being 0),
-// so sample() and pdf() agree for MIS. f is not divided by the lobe count: keeping the sum
-// energy-conserving is the material's job.
+// so sample() and pdf() agree for MIS; with a coated lobe among several, whose pdf is no density,
+// the chosen lobe's own weight instead (bsdf.cpp). f is not divided by the lobe count: keeping
+// the sum energy-conserving is the material's job.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -32,6 +33,8 @@ struct Bsdf {
     CANDELA_HD bool uses_choice() const;
     // The colour the `albedo` debug integrator shows: the sum of the lobes' reflectance/tint.
     CANDELA_HD Rgb albedo() const;
+    // Whether some lobe's eval() and pdf() are estimates (a coated lobe, layered.h).
+    CANDELA_HD bool has_estimated_lobe() const;
 };
 
 }  // namespace candela

@@ -90,6 +90,14 @@ using CoatedDiffuseLobe = LayeredLobe<LambertianLobe>;
 // A dielectric coat over a (rough) conductor: pbrt-v4's CoatedConductorBxDF.
 using CoatedConductorLobe = LayeredLobe<ConductorLobe>;
 
+// Whether a lobe's eval() and pdf() are estimates (the coated lobes): pdf() is then no density
+// of sample(), and a Bsdf of several lobes cannot weight one lobe's sample by the others'
+// densities (bsdf.cpp).
+template <class T>
+inline constexpr bool kIsLayeredLobe = false;
+template <class Base>
+inline constexpr bool kIsLayeredLobe<LayeredLobe<Base>> = true;
+
 extern template struct LayeredLobe<LambertianLobe>;
 extern template struct LayeredLobe<ConductorLobe>;
 
