@@ -8,10 +8,9 @@
 // is mirrored back to the base, so every return to the coat sees the same cosine distribution
 // and is reflected with the internal diffuse reflectance
 //   r = int_0^1 F_inside(mu) 2 mu dmu                       (total internal reflection included).
-// A walk of max_depth events alternates base and coat, base first. Sampling leaves at a coat
-// event, so it counts K = max_depth / 2 of them; evaluation joins every base event to wi, so it
-// counts K = (max_depth + 1) / 2 (the two agree for even max_depth, pbrt-v4's default 10).
-// Paths with k = 0 .. K-1 internal reflections are counted:
+// Paths of at most max_depth events between the layers count (layered.h); events alternate base
+// and coat, base first, and a path leaves after a base event, so K = (max_depth + 1) / 2 paths
+// with k = 0 .. K-1 internal reflections count:
 //   f(wo, wi)  = a T(cos_o) T(cos_i) / (pi eta^2) sum_{k<K} (a r)^k          (radiance mode)
 //   albedo(wo) = F(cos_o) + (1 - F(cos_o)) a (1 - r) sum_{k<K} (a r)^k
 //              = F(cos_o) + (1 - F(cos_o)) (1 - r^K)                        for a = 1,
@@ -49,9 +48,8 @@ inline double internal_diffuse_reflectance(double eta) {
     return sum / n;
 }
 
-// The paths eval() counts for a walk of max_depth events, and those sample() counts.
-inline int eval_paths(int max_depth) { return (max_depth + 1) / 2; }
-inline int sample_paths(int max_depth) { return max_depth / 2; }
+// The paths counted for max_depth.
+inline int counted_paths(int max_depth) { return (max_depth + 1) / 2; }
 
 // The expected coated-diffuse f (see the top of the file) for cosines cos_o, cos_i > 0, counting
 // `paths` paths.

@@ -268,7 +268,11 @@ CANDELA_HD std::optional<BsdfSample> LayeredLobe<Base>::sample(const Vec3f& wo_i
     float pdf = bs->pdf;
     float z = thick;
 
-    for (int depth = 0; depth < max_depth; ++depth) {
+    // One event more than eval()'s walks: the exit through the coat is an event of the walk here,
+    // so max_depth + 1 events count the paths of at most max_depth events between the layers,
+    // the paths eval() counts (pbrt-v4 stops one event earlier, so that its Sample_f and f
+    // truncate differently wherever the medium scatters or max_depth is odd).
+    for (int depth = 0; depth <= max_depth; ++depth) {
         // Roulette on the walk's weight f / pdf; the survival probability joins the density.
         float rr_beta = f.max_component() / pdf;
         if (depth > 3 && rr_beta < 0.25f) {

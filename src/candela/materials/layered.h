@@ -28,16 +28,18 @@
 // Two-sided: wo below the surface mirrors the configuration above (as the other lobes). The base
 // reflects only, so nothing is transmitted and f = 0 between opposite hemispheres.
 //
-// Truncation (as pbrt-v4): eval() counts the paths with at most max_depth scattering events
-// between the interfaces, sample() those with at most max_depth - 1 (its exit through the coat
-// is an event too). So sample() with max_depth + 1 has the expectation of eval() with max_depth;
-// in a clear slab the two coincide for even max_depth (the default 10).
+// Truncation: eval() and sample() count the paths with at most max_depth scattering events
+// between the interfaces (pbrt-v4's f does; its Sample_f counts one event fewer, see below).
 //
-// Where this differs from pbrt-v4, on purpose:
+// Where this differs from pbrt-v4, on purpose, so that eval() and sample() estimate the same
+// BSDF (a renderer adds light-sampled eval() and BSDF-sampled sample() by MIS):
 //   - eval()'s MIS weights for a path leaving through a rough coat use the density of the
 //     next-event strategy in the measure of the direction it draws (layered.cpp); pbrt-v4's
 //     weights do not add to 1 there and its f exceeds what its own Sample_f gives by 3 to 11 %
 //     for rough coats (layered_stat_test.cpp measures the agreement of ours).
+//   - sample() walks max_depth + 1 events, the last being its exit through the coat, to count
+//     eval()'s paths; pbrt-v4's Sample_f walks max_depth, missing the paths of exactly max_depth
+//     events inside (none in a clear slab with even max_depth, pbrt-v4's default case).
 //   - pdf() of a delta-only lobe is 0 (pbrt-v4 returns its uniform share 0.1 / (4 pi)), so that
 //     mixtures with other lobes keep their densities; an index-matched coat (eta = 1) is
 //     specular throughout (pbrt-v4 samples it as specular but weights it as glossy).
