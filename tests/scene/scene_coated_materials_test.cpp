@@ -129,6 +129,24 @@ TEST(SceneCoatedMaterials, BadValuesAreLocatedErrors) {
     EXPECT_NE(near.message().find("unknown key \"roughness\""), std::string::npos) << near.message();
 }
 
+TEST(SceneCoatedMaterials, ParametersMayBeTextures) {
+    // A checkerboard of 0.25 and 1 over uv: the base's albedo, the coat's roughness and the
+    // conductor's reflectance follow it (each clamped to its range).
+    Scene s = load_json(R"({"textures": {"c": {"type": "checkerboard", "color0": 0.25, "color1": 1}},
+        "materials": {"d": {"type": "coated_diffuse", "albedo": {"texture": "c"}, "roughness": {"texture": "c"}},
+                      "k": {"type": "coated_conductor", "reflectance": {"texture": "c"}}}})");
+    ASSERT_TRUE(s.materials.at(0).textured);
+    ASSERT_TRUE(s.materials.at(1).textured);
+    auto at = [](float u, float v) { return TextureContext{Vec2f(u, v), Vec3f(0.0f)}; };
+    auto diffuse_at = [&](float u) { return std::get<CoatedDiffuseLobe>(build_bsdf(s.materials[0], s.textures, at(u, 0.5f)).lobes[0]); };
+    EXPECT_EQ(diffuse_at(0.5f).base.reflectance, Rgb(0.25f));
+    EXPECT_EQ(diffuse_at(0.5f).coat.distribution.alpha_x, 0.25f);
+    EXPECT_EQ(diffuse_at(1.5f).base.reflectance, Rgb(1.0f));
+    EXPECT_EQ(diffuse_at(1.5f).coat.distribution.alpha_y, 1.0f);
+    auto conductor_at = [&](float u) { return std::get<CoatedConductorLobe>(build_bsdf(s.materials[1], s.textures, at(u, 0.5f)).lobes[0]); };
+    EXPECT_LT(conductor_at(0.5f).base.k.max_component(), conductor_at(1.5f).base.k.max_component());
+}
+
 TEST(SceneCoatedMaterials, MixMayHoldACoat) {
     Scene s = load_json(R"({"materials": {"m": {"type": "mix", "lobes": [
         {"type": "coated_diffuse", "albedo": 0.3}, {"type": "coated_conductor", "reflectance": 0.9}]}}})");
