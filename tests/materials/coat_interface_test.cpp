@@ -20,12 +20,15 @@ const CoatInterface kCoats[] = {{1.5f, TrowbridgeReitz(0.0f)}, {1.5f, Trowbridge
                                 {1.33f, TrowbridgeReitz(0.05f, 0.4f)}, {1.0f / 1.5f, TrowbridgeReitz(0.2f)}};
 
 // The Fresnel reflectance at the microfacet between wo and wi (generalized half vector), the
-// probability with which the unrestricted interface reflects there.
+// probability with which the unrestricted interface reflects there; for a refraction from the
+// cosine on the optically thinner side, which is accurate near the critical angle.
 float fresnel_between(const CoatInterface& coat, Vec3f wo, Vec3f wi) {
-    float eta_rel = wo.z * wi.z > 0.0f ? 1.0f : (wo.z > 0.0f ? coat.eta : 1.0f / coat.eta);
+    bool reflection = wo.z * wi.z > 0.0f;
+    float eta_rel = reflection ? 1.0f : (wo.z > 0.0f ? coat.eta : 1.0f / coat.eta);
     Vec3f wm = normalize(wo + wi * eta_rel);
     if (wm.z < 0.0f) wm = -wm;
-    return fresnel_dielectric(dot(wo, wm), coat.eta);
+    bool wo_rarer = reflection || (wo.z > 0.0f) == (coat.eta > 1.0f);
+    return fresnel_dielectric(dot(wo_rarer ? wo : wi, wm), coat.eta);
 }
 
 TEST(CoatInterface, UnrestrictedIsTheDielectricLobe) {

@@ -168,8 +168,8 @@ TEST(CoatedParams, BuildTheLobesAsPbrtGetBxDF) {
     const TextureContext ctx{};
     CoatedDiffuseParams d;
     d.albedo = ColorParam{Rgb(1.5f, 0.5f, -1.0f)};
-    d.coat.roughness_u = FloatParam{0.2f};
-    d.coat.roughness_v = FloatParam{0.05f};
+    d.coat.roughness.alpha_u = FloatParam{0.2f};
+    d.coat.roughness.alpha_v = FloatParam{0.05f};
     d.coat.ior = 0.0f;
     d.coat.medium_albedo = ColorParam{Rgb(2.0f, 0.5f, 0.25f)};
     d.coat.g = FloatParam{-3.0f};
@@ -194,8 +194,8 @@ TEST(CoatedParams, BuildTheLobesAsPbrtGetBxDF) {
     c.coat.ior = 1.25f;
     c.conductor_eta = ColorParam{Rgb(0.5f, 1.0f, 1.5f)};
     c.conductor_k = ColorParam{Rgb(2.5f, 2.0f, 1.25f)};
-    c.conductor_roughness_u = FloatParam{0.3f};
-    c.conductor_roughness_v = FloatParam{0.3f};
+    c.conductor_roughness.alpha_u = FloatParam{0.3f};
+    c.conductor_roughness.alpha_v = FloatParam{0.3f};
     auto cc = std::get<CoatedConductorLobe>(c.lobe(textures, ctx));
     EXPECT_EQ(cc.base.eta, Rgb(0.4f, 0.8f, 1.2f));
     EXPECT_EQ(cc.base.k, Rgb(2.0f, 1.6f, 1.0f));

@@ -145,15 +145,15 @@ Scene cornell_coated_scene(int spp) {
     Scene s = test::cornell_walls_scene(kSize, kSize, spp);
     CoatedDiffuseParams diffuse;
     diffuse.albedo = ColorParam{Rgb(0.7f, 0.3f, 0.2f)};
-    diffuse.coat.roughness_u = diffuse.coat.roughness_v = FloatParam{0.2f};
+    diffuse.coat.roughness = RoughnessParams{FloatParam{0.2f}, FloatParam{0.2f}};
     diffuse.coat.medium_albedo = ColorParam{Rgb(0.5f)};
     diffuse.coat.thickness = FloatParam{0.3f};
     diffuse.coat.g = FloatParam{0.3f};
     CoatedConductorParams gold;
-    gold.coat.roughness_u = gold.coat.roughness_v = FloatParam{0.05f};
+    gold.coat.roughness = RoughnessParams{FloatParam{0.05f}, FloatParam{0.05f}};
     gold.conductor_eta = ColorParam{Rgb(0.143f, 0.374f, 1.442f)};
     gold.conductor_k = ColorParam{Rgb(3.983f, 2.385f, 1.603f)};
-    gold.conductor_roughness_u = gold.conductor_roughness_v = FloatParam{0.3f};
+    gold.conductor_roughness = RoughnessParams{FloatParam{0.3f}, FloatParam{0.3f}};
     s.materials.push_back(make_material(diffuse));
     s.materials.push_back(make_material(gold));
     s.material_names.push_back("coated_diffuse");

@@ -64,7 +64,12 @@ struct CoatInterface {
         if (wm.z < 0.0f) wm = -wm;
         float wo_dot_wm = dot(wo, wm), wi_dot_wm = dot(wi, wm);
         if (wo_dot_wm * cos_o <= 0.0f || wi_dot_wm * cos_i <= 0.0f) return 0.0f;
-        float p_reflect = reflect_probability(fresnel_dielectric(wo_dot_wm, eta), flags);
+        // The Fresnel term as DielectricLobe takes it: for a refraction, from the cosine on the
+        // optically thinner side (the same value, without the cancellation near the critical
+        // angle on the denser side).
+        bool wo_rarer = reflection || (cos_o > 0.0f) == (eta > 1.0f);
+        float fresnel = fresnel_dielectric(wo_rarer ? wo_dot_wm : wi_dot_wm, eta);
+        float p_reflect = reflect_probability(fresnel, flags);
         if (p_reflect < 0.0f) return 0.0f;
         float pdf_wm = distribution.pdf(wo, wm);
         if (reflection) return pdf_wm / (4.0f * std::abs(wo_dot_wm)) * p_reflect;
