@@ -39,6 +39,16 @@ TEST(EnumNames, FilmNamesRoundTrip) {
     EXPECT_EQ(parse_transfer("gamma"), Transfer::kGamma);
 }
 
+TEST(EnumNames, MetalNamesRoundTripInTheTablesOrder) {
+    ASSERT_EQ(metal_names().size(), static_cast<size_t>(kMetalCount));
+    for (std::string_view name : metal_names()) EXPECT_EQ(metal_name(parse_metal(name).value()), name);
+    EXPECT_EQ(parse_metal("Au"), Metal::kAu);
+    EXPECT_EQ(parse_metal("CuZn"), Metal::kCuZn);
+    EXPECT_EQ(metal_name(Metal::kTi), "Ti");
+    EXPECT_FALSE(parse_metal("au"));  // chemical symbols, case-sensitive
+    EXPECT_EQ(names_list(metal_names()), "Ag, Al, Au, Cr, Cu, CuZn, Fe, Ti");
+}
+
 TEST(EnumNames, UnknownNamesParseToNothing) {
     EXPECT_FALSE(parse_integrator_type("volpath"));
     EXPECT_FALSE(parse_integrator_type("AO"));  // names are case-sensitive

@@ -17,6 +17,9 @@ constexpr std::array<std::string_view, 2> kSamplerTypeNames = {"independent", "s
 constexpr std::array<std::string_view, 4> kFilterTypeNames = {"box", "tent", "gaussian", "smallpt"};
 constexpr std::array<std::string_view, 4> kTonemapNames = {"clamp", "exposure", "reinhard", "aces"};
 constexpr std::array<std::string_view, 2> kTransferNames = {"srgb", "gamma"};
+// In the order of materials/metal_table.h (tools/metals/make_metal_table.py's METALS).
+constexpr std::array<std::string_view, kMetalCount> kMetalNames = {"Au", "Ag", "Cu", "Al",
+                                                                   "Cr", "Fe", "Ti", "CuZn"};
 
 template <class E, size_t N>
 std::string_view name_of(const std::array<std::string_view, N>& table, E value) {
@@ -41,6 +44,7 @@ std::string_view light_selection_name(LightSelection s) { return name_of(kLightS
 std::string_view sampler_type_name(SamplerType t) { return name_of(kSamplerTypeNames, t); }
 std::string_view tonemap_name(Tonemap tonemap) { return name_of(kTonemapNames, tonemap); }
 std::string_view transfer_name(Transfer transfer) { return name_of(kTransferNames, transfer); }
+std::string_view metal_name(Metal metal) { return name_of(kMetalNames, metal); }
 
 std::optional<IntegratorType> parse_integrator_type(std::string_view name) {
     return value_of<IntegratorType>(kIntegratorTypeNames, name);
@@ -60,6 +64,7 @@ std::optional<Tonemap> parse_tonemap(std::string_view name) {
 std::optional<Transfer> parse_transfer(std::string_view name) {
     return value_of<Transfer>(kTransferNames, name);
 }
+std::optional<Metal> parse_metal(std::string_view name) { return value_of<Metal>(kMetalNames, name); }
 
 std::span<const std::string_view> integrator_type_names() { return kIntegratorTypeNames; }
 std::span<const std::string_view> filter_type_names() { return kFilterTypeNames; }
@@ -67,6 +72,7 @@ std::span<const std::string_view> light_selection_names() { return kLightSelecti
 std::span<const std::string_view> sampler_type_names() { return kSamplerTypeNames; }
 std::span<const std::string_view> tonemap_names() { return kTonemapNames; }
 std::span<const std::string_view> transfer_names() { return kTransferNames; }
+std::span<const std::string_view> metal_names() { return kMetalNames; }
 
 std::string names_list(std::span<const std::string_view> names) {
     std::vector<std::string_view> sorted(names.begin(), names.end());

@@ -1,6 +1,6 @@
 #pragma once
 // The names the scene file and the command line use for closed sets (integrators, filters, tone
-// maps, transfer curves): one explicit table per kind, no self-registration (STYLE.md). Also the
+// maps, transfer curves, measured metals): one explicit table per kind, no self-registration (STYLE.md). Also the
 // "did you mean" helper that unknown keys and names share.
 #include <cstddef>
 #include <optional>
@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "candela/film/film_settings.h"
+#include "candela/materials/metal_table.h"
 #include "candela/render/render_settings.h"
 
 namespace candela {
@@ -20,6 +21,7 @@ std::string_view light_selection_name(LightSelection selection);
 std::string_view sampler_type_name(SamplerType type);
 std::string_view tonemap_name(Tonemap tonemap);
 std::string_view transfer_name(Transfer transfer);
+std::string_view metal_name(Metal metal);  // the chemical symbol: "Au", "CuZn" ...
 
 // The value a scene-file name stands for; nullopt for an unknown name (names are case-sensitive).
 std::optional<IntegratorType> parse_integrator_type(std::string_view name);
@@ -28,6 +30,7 @@ std::optional<LightSelection> parse_light_selection(std::string_view name);
 std::optional<SamplerType> parse_sampler_type(std::string_view name);
 std::optional<Tonemap> parse_tonemap(std::string_view name);
 std::optional<Transfer> parse_transfer(std::string_view name);
+std::optional<Metal> parse_metal(std::string_view name);
 
 // Every valid name of a kind, in the enum's order.
 std::span<const std::string_view> integrator_type_names();
@@ -36,6 +39,7 @@ std::span<const std::string_view> light_selection_names();
 std::span<const std::string_view> sampler_type_names();
 std::span<const std::string_view> tonemap_names();
 std::span<const std::string_view> transfer_names();
+std::span<const std::string_view> metal_names();
 
 // The names sorted alphabetically and joined as "a, b, c", for "expected one of: ..." messages.
 std::string names_list(std::span<const std::string_view> names);
