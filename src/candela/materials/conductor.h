@@ -7,13 +7,16 @@
 // pbrt-v4's ConductorBxDF. It reflects on whichever side wo lies (a two-sided surface, as
 // LambertianLobe), so wo and wi below the surface mirror the configuration above it.
 //
-// Single scattering only: light that microfacets send to other microfacets is lost, so a rough
-// conductor is darker than its Fresnel colour (the multiscatter option restores that energy).
+// Single scattering loses the light that microfacets send to other microfacets, so a rough
+// conductor is darker than its Fresnel colour; with_multiscatter() adds Kulla & Conty's lobe that
+// returns it (microfacet_multiscatter.h).
 #include <optional>
 
 #include "candela/materials/bsdf_lobe.h"
 #include "candela/materials/fresnel.h"
+#include "candela/materials/microfacet_multiscatter.h"
 #include "candela/materials/trowbridge_reitz.h"
+#include "candela/sampling/warps.h"
 
 namespace candela {
 
@@ -21,6 +24,16 @@ struct ConductorLobe {
     TrowbridgeReitz distribution;
     Color eta{1.0f};  // real part of the metal's index relative to the outside medium
     Color k{0.0f};    // imaginary part (absorption)
+    bool multiscatter = false;  // add the multiple-scattering compensation lobe
+    Color fresnel_avg{0.0f};    // 2 integral F(mu) mu dmu per channel, when multiscatter
+
+    // This lobe with the compensation lobe added (none when smooth: a mirror loses nothing).
+    CANDELA_HD ConductorLobe with_multiscatter() const {
+        ConductorLobe lobe = *this;
+        lobe.multiscatter = !distribution.effectively_smooth();
+        lobe.fresnel_avg = hemispherical_average<Color>([&](float mu) { return fresnel_complex(mu, eta, k); });
+        return lobe;
+    }
 
     // f and pdf of one pair of directions, computed together: sample() returns exactly what
     // eval() and pdf() give for its wi, and both share the half vector and D.
@@ -29,6 +42,17 @@ struct ConductorLobe {
         float pdf = 0.0f;
     };
     CANDELA_HD Evaluation evaluate(const Vec3f& wo, const Vec3f& wi) const {
+        Evaluation e = evaluate_single(wo, wi);
+        if (!multiscatter || !same_hemisphere(wo, wi)) return e;
+        ConductorMultiscatter ms(multiscatter_alpha(distribution), fresnel_avg);
+        float cos_o = abs_cos_theta(wo), cos_i = abs_cos_theta(wi);
+        float p = ms.probability(cos_o);
+        e.f += ms.f(cos_o, cos_i);
+        e.pdf = (1.0f - p) * e.pdf + p * cos_i * kInvPi;
+        return e;
+    }
+    // The single-scattering (Torrance-Sparrow) part alone.
+    CANDELA_HD Evaluation evaluate_single(const Vec3f& wo, const Vec3f& wi) const {
         Evaluation e;
         if (distribution.effectively_smooth() || !same_hemisphere(wo, wi)) return e;
         Vec3f wm = wo + wi;
@@ -45,14 +69,17 @@ struct ConductorLobe {
         return e;
     }
 
-    // D G F / (4 cos_o cos_i) with wo, wi on one side; 0 otherwise and when smooth (delta).
+    // D G F / (4 cos_o cos_i) (+ f_ms) with wo, wi on one side; 0 otherwise and when smooth (delta).
     CANDELA_HD Rgb eval(const Vec3f& wo, const Vec3f& wi, TransportMode) const {
         return evaluate(wo, wi).f;
     }
-    // D_wo(wm) / (4 |wo.wm|) on wo's side; 0 otherwise and when smooth.
+    // D_wo(wm) / (4 |wo.wm|) on wo's side (mixed with the cosine's |cos wi| / pi in proportions
+    // 1 - p : p with multiscatter); 0 otherwise and when smooth.
     CANDELA_HD float pdf(const Vec3f& wo, const Vec3f& wi) const { return evaluate(wo, wi).pdf; }
     // The mirror direction of a visible normal drawn from u (uc unused); nullopt for wo in the
     // plane or a reflection through the surface (the visible normal tilted past wo's horizon).
+    // With multiscatter, u.x first picks the compensation lobe with its probability p (then a
+    // cosine-distributed wi from (u.x / p, u.y)) and is stretched back over [0, 1) otherwise.
     CANDELA_HD std::optional<BsdfSample> sample(const Vec3f& wo, float, const Vec2f& u,
                                                 TransportMode) const {
         std::optional<BsdfSample> result;
@@ -65,7 +92,21 @@ struct ConductorLobe {
             s.is_delta = true;
             return result;
         }
-        Vec3f wi = reflect(wo, distribution.sample_wm(wo, u));
+        Vec2f v = u;
+        if (multiscatter) {
+            float p = ConductorMultiscatter(multiscatter_alpha(distribution), fresnel_avg).probability(abs_cos_theta(wo));
+            if (u.x < p) {
+                Vec3f wi = sample_cosine_hemisphere(Vec2f(u.x / p, u.y));
+                if (wo.z < 0.0f) wi.z = -wi.z;
+                return sample_at(wo, wi);
+            }
+            v.x = (u.x - p) / (1.0f - p);
+        }
+        return sample_at(wo, reflect(wo, distribution.sample_wm(wo, v)));
+    }
+    // The sample for wi (f and pdf of both lobes); nullopt where the pdf is 0.
+    CANDELA_HD std::optional<BsdfSample> sample_at(const Vec3f& wo, const Vec3f& wi) const {
+        std::optional<BsdfSample> result;
         Evaluation e = evaluate(wo, wi);
         if (!(e.pdf > 0.0f)) return result;
         BsdfSample& s = result.emplace();

@@ -15,12 +15,17 @@
 // for reflection (eq. 14) and |wi.wm| / (wi.wm + wo.wm / eta')^2 for refraction (eq. 17).
 //
 // Smooth (effectively smooth alpha, or eta = 1): FresnelSpecularLobe with the exact Fresnel term.
+//
+// with_multiscatter() adds Kulla & Conty's compensation for the light lost between microfacets,
+// by reflection and transmission (microfacet_multiscatter.h).
 #include <optional>
 
 #include "candela/materials/bsdf_lobe.h"
 #include "candela/materials/fresnel.h"
 #include "candela/materials/fresnel_specular.h"
+#include "candela/materials/microfacet_multiscatter.h"
 #include "candela/materials/trowbridge_reitz.h"
+#include "candela/sampling/warps.h"
 
 namespace candela {
 
@@ -28,8 +33,22 @@ struct DielectricLobe {
     Color tint{1.0f};  // multiplies reflected and refracted light alike
     float eta = 1.5f;
     TrowbridgeReitz distribution;
+    bool multiscatter = false;  // add the multiple-scattering compensation lobes
+    float fresnel_avg = 0.0f;   // the smooth interface's 2 integral F mu dmu from its rarer side
 
     CANDELA_HD bool is_smooth() const { return eta == 1.0f || distribution.effectively_smooth(); }
+
+    // This lobe with the compensation lobes added (none when smooth: smooth glass loses nothing).
+    CANDELA_HD DielectricLobe with_multiscatter() const {
+        DielectricLobe lobe = *this;
+        lobe.multiscatter = !is_smooth();
+        const float eta_big = eta >= 1.0f ? eta : 1.0f / eta;
+        lobe.fresnel_avg = hemispherical_average<float>([&](float mu) { return fresnel_dielectric(mu, eta_big); });
+        return lobe;
+    }
+    CANDELA_HD DielectricMultiscatter multiscatter_lobes(bool wo_outside) const {
+        return DielectricMultiscatter(multiscatter_alpha(distribution), eta, fresnel_avg, wo_outside);
+    }
 
     // f and pdf of one pair of directions, computed together (as ConductorLobe::evaluate), and
     // the index ratio eta' crossed (1 for reflection).
@@ -39,6 +58,23 @@ struct DielectricLobe {
         float eta_rel = 1.0f;
     };
     CANDELA_HD Evaluation evaluate(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
+        Evaluation e = evaluate_single(wo, wi, mode);
+        float cos_o = cos_theta(wo), cos_i = cos_theta(wi);
+        if (!multiscatter || cos_o == 0.0f || cos_i == 0.0f) return e;
+        DielectricMultiscatter ms = multiscatter_lobes(cos_o > 0.0f);
+        bool transmission = cos_o * cos_i < 0.0f;
+        float f = ms.f(std::abs(cos_o), std::abs(cos_i), transmission);
+        if (transmission) {
+            e.eta_rel = cos_o > 0.0f ? eta : 1.0f / eta;
+            if (mode == TransportMode::kRadiance) f /= e.eta_rel * e.eta_rel;
+        }
+        float p = ms.probability(std::abs(cos_o));
+        e.f += tint * f;
+        e.pdf = (1.0f - p) * e.pdf + p * ms.pdf(std::abs(cos_i), transmission);
+        return e;
+    }
+    // The single-scattering (Walter et al.) part alone.
+    CANDELA_HD Evaluation evaluate_single(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
         Evaluation e;
         float cos_o = cos_theta(wo), cos_i = cos_theta(wi);
         if (is_smooth() || cos_o == 0.0f || cos_i == 0.0f) return e;
@@ -84,12 +120,26 @@ struct DielectricLobe {
         return evaluate(wo, wi, TransportMode::kImportance).pdf;
     }
     // A visible normal from u, then reflection when uc < F at that normal, refraction otherwise;
-    // nullopt for wo in the plane or a direction that ends on the wrong side.
+    // nullopt for wo in the plane or a direction that ends on the wrong side. With multiscatter,
+    // uc first picks the compensation lobes with their probability p, then (stretched over
+    // [0, 1)) transmission or reflection by their shares, and u a cosine-distributed wi on that
+    // side; otherwise uc is stretched back over [0, 1) for the choice above.
     CANDELA_HD std::optional<BsdfSample> sample(const Vec3f& wo, float uc, const Vec2f& u,
                                                 TransportMode mode) const {
         if (is_smooth()) return FresnelSpecularLobe{tint, eta, false}.sample(wo, uc, u, mode);
+        if (wo.z == 0.0f) return std::nullopt;
+        if (multiscatter) {
+            DielectricMultiscatter ms = multiscatter_lobes(wo.z > 0.0f);
+            float p = ms.probability(std::abs(wo.z));
+            if (uc < p) {
+                Vec3f wi = sample_cosine_hemisphere(u);
+                bool transmission = uc / p < ms.transmit_fraction;
+                if ((wo.z < 0.0f) != transmission) wi.z = -wi.z;
+                return sample_at(wo, wi, mode);
+            }
+            uc = (uc - p) / (1.0f - p);
+        }
         std::optional<BsdfSample> result;
-        if (wo.z == 0.0f) return result;
         Vec3f wm = distribution.sample_wm(wo, u);
         Vec3f wi;
         if (uc < fresnel_dielectric(dot(wo, wm), eta)) {
@@ -100,6 +150,11 @@ struct DielectricLobe {
             // rounding at the critical angle.
             if (!refract(wo, wm, eta, &wi) || !(wi.z * wo.z < 0.0f)) return result;
         }
+        return sample_at(wo, wi, mode);
+    }
+    // The sample for wi (f and pdf of all lobes); nullopt where the pdf is 0.
+    CANDELA_HD std::optional<BsdfSample> sample_at(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
+        std::optional<BsdfSample> result;
         Evaluation e = evaluate(wo, wi, mode);
         if (!(e.pdf > 0.0f)) return result;
         BsdfSample& s = result.emplace();
