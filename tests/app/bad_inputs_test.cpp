@@ -130,7 +130,7 @@ const BadInput kBadInputs[] = {
      "expected an integer in [1, 16777216], got \"16\""},
     {"wrong_vector_length.json", kStructure, kError, "", 2, 26, "/camera/position",
      "expected an array of 3 numbers [x, y, z], got [0, 1]"},
-    // --- unknown keys, types and names (20)
+    // --- unknown keys, types and names (21)
     {"missing_key_near_miss.json", kUnknownName, kError, "", 4, 45, "/shapes/0",
      "unknown key \"radus\" (did you mean \"radius\"?)"},
     {"mix_nested.json", kUnknownName, kError, "", 5, 16, "/materials/coated/lobes/1/type",
@@ -165,6 +165,8 @@ const BadInput kBadInputs[] = {
      "unknown light type \"sun\"; expected one of: directional, environment, point, spot"},
     {"unknown_material_type.json", kUnknownName, kError, "", 3, 21, "/materials/red/type",
      "unknown material type \"glossy\"; expected one of: coated_conductor, coated_diffuse, conductor, dielectric, diffuse, mirror, mix, thin_dielectric, transmission"},
+    {"unknown_metal.json", kUnknownName, kError, "", 3, 44, "/materials/gold/metal",
+     "unknown metal \"Gold\"; expected one of: Ag, Al, Au, Cr, Cu, CuZn, Fe, Ti"},
     {"unknown_shape_type.json", kUnknownName, kError, "", 4, 14, "/shapes/0/type",
      "unknown shape type \"shpere\"; expected one of: disk, mesh, quad, sphere"},
     {"unknown_top_level_key.json", kUnknownName, kError, "", 2, 3, "",

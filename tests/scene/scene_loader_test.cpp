@@ -236,7 +236,7 @@ TEST(SceneLoader, LoadsEverySectionFromAFile) {
     EXPECT_EQ(s.film.filter, FilterType::kTent);
     EXPECT_EQ(s.film.transfer, Transfer::kGamma);
     ASSERT_EQ(s.material_names, (std::vector<std::string>{"white", "mirror", "glass", "gold", "foil",
-                                                          "frosted", "pane"}));
+                                                          "frosted", "pane", "copper"}));
     // Inputs first: picture before checks, the inline constant before worn.
     EXPECT_EQ(s.texture_names, (std::vector<std::string>{"picture", "checks", "", "worn", "dim"}));
     EXPECT_EQ(s.texture_files.size(), 1u);

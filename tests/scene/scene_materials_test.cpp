@@ -106,11 +106,11 @@ TEST(SceneMaterials, ConductorNeedsEtaAndKOrReflectance) {
     EXPECT_EQ(both.message(), "give \"eta\" and \"k\" or \"reflectance\", not both");
     SceneError only_eta = material_error(R"({"type": "conductor", "eta": 1})");
     EXPECT_EQ(only_eta.where().json_pointer, "/materials/m");
-    EXPECT_EQ(only_eta.message(), "a conductor needs \"eta\" and \"k\", or \"reflectance\"");
+    EXPECT_EQ(only_eta.message(), "a conductor needs \"eta\" and \"k\", \"reflectance\" or \"metal\"");
     EXPECT_EQ(material_error(R"({"type": "conductor", "eta": 1, "k": -1})").message(),
               "expected a number >= 0, got -1");
     EXPECT_EQ(material_error(R"({"type": "conductor", "eta": 1, "k": 1, "ior": 1.5})").message(),
-              "unknown key \"ior\"; expected one of: alpha, bump_map, eta, k, normal_map, normal_map_convention, reflectance, roughness, type");
+              "unknown key \"ior\"; expected one of: alpha, bump_map, eta, k, metal, multiscatter, normal_map, normal_map_convention, reflectance, roughness, type");
 }
 
 TEST(SceneMaterials, ConductorParametersMayBeTextures) {

@@ -87,14 +87,18 @@ struct RoughnessParams {
     }
 };
 
-// `conductor` by its complex index of refraction eta + i k, per channel.
+// `conductor` by its complex index of refraction eta + i k, per channel (given, or of a measured
+// `metal`); `multiscatter` adds the compensation of microfacet_multiscatter.h.
 struct ConductorParams {
     ColorParam eta{Color(1.0f)};
     ColorParam k{Color(0.0f)};
     RoughnessParams roughness;
+    bool multiscatter = false;
 
     CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
-        return ConductorLobe{roughness.distribution(t, ctx), t.eval(eta, ctx), t.eval(k, ctx)};
+        ConductorLobe l{roughness.distribution(t, ctx), t.eval(eta, ctx), t.eval(k, ctx)};
+        if (multiscatter) return l.with_multiscatter();
+        return l;
     }
     CANDELA_HD bool is_textured() const {
         return eta.is_textured() || k.is_textured() || roughness.is_textured();
@@ -115,10 +119,13 @@ CANDELA_HD inline Color conductor_k_for_reflectance(const Color& reflectance) {
 struct ConductorReflectanceParams {
     ColorParam reflectance{Color(1.0f)};
     RoughnessParams roughness;
+    bool multiscatter = false;
 
     CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
-        return ConductorLobe{roughness.distribution(t, ctx), Color(1.0f),
-                             conductor_k_for_reflectance(t.eval(reflectance, ctx))};
+        ConductorLobe l{roughness.distribution(t, ctx), Color(1.0f),
+                        conductor_k_for_reflectance(t.eval(reflectance, ctx))};
+        if (multiscatter) return l.with_multiscatter();
+        return l;
     }
     CANDELA_HD bool is_textured() const { return reflectance.is_textured() || roughness.is_textured(); }
     CANDELA_HD bool is_anisotropic() const { return roughness.is_anisotropic(); }
@@ -130,9 +137,12 @@ struct RoughDielectricParams {
     float ior = 1.5f;
     ColorParam tint{Color(1.0f)};
     RoughnessParams roughness;
+    bool multiscatter = false;  // add the compensation of microfacet_multiscatter.h
 
     CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
-        return DielectricLobe{t.eval(tint, ctx), ior, roughness.distribution(t, ctx)};
+        DielectricLobe l{t.eval(tint, ctx), ior, roughness.distribution(t, ctx)};
+        if (multiscatter) return l.with_multiscatter();
+        return l;
     }
     CANDELA_HD bool is_textured() const { return tint.is_textured() || roughness.is_textured(); }
     CANDELA_HD bool is_anisotropic() const { return roughness.is_anisotropic(); }

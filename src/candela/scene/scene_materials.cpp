@@ -43,19 +43,34 @@ bool is_zero(const RoughnessParams& r) {
     return !r.is_textured() && r.alpha_u.value == 0.0f && r.alpha_v.value == 0.0f;
 }
 
-// `conductor`: eta and k, or reflectance (not both, as pbrt-v4), and roughness.
+// `multiscatter`: Kulla & Conty's compensation on a rough conductor or dielectric (off, as pbrt-v4).
+bool read_multiscatter(JsonCursor& c) {
+    std::optional<JsonCursor> v = c.get("multiscatter");
+    return v && v->boolean();
+}
+
+// `conductor`: eta and k, or reflectance, or a measured metal (one of the three, as pbrt-v4
+// takes eta/k or reflectance), and roughness.
 LobeParams read_conductor(JsonCursor& c, Scene& scene) {
     RoughnessParams roughness;
     if (auto v = c.get("roughness")) roughness = read_roughness(*v, scene);
+    const bool multiscatter = read_multiscatter(c);
     std::optional<JsonCursor> eta = c.get("eta"), k = c.get("k"), reflectance = c.get("reflectance");
+    if (std::optional<JsonCursor> metal = c.get("metal")) {
+        if (eta || k || reflectance)
+            (eta ? *eta : k ? *k : *reflectance).fail("give one of \"metal\", \"eta\" and \"k\", or \"reflectance\"");
+        const MetalIor& ior = metal_ior(*parse_metal(metal->choice("metal", metal_names())));
+        return ConductorParams{ColorParam{ior.eta}, ColorParam{ior.k}, roughness, multiscatter};
+    }
     if (reflectance) {
         if (eta || k)
             (eta ? *eta : *k).fail("give \"eta\" and \"k\" or \"reflectance\", not both");
-        return ConductorReflectanceParams{read_color_param(*reflectance, scene, kReflectance), roughness};
+        return ConductorReflectanceParams{read_color_param(*reflectance, scene, kReflectance), roughness,
+                                          multiscatter};
     }
-    if (!eta || !k) c.fail("a conductor needs \"eta\" and \"k\", or \"reflectance\"");
+    if (!eta || !k) c.fail("a conductor needs \"eta\" and \"k\", \"reflectance\" or \"metal\"");
     return ConductorParams{read_color_param(*eta, scene, Bounds::at_least(0)),
-                           read_color_param(*k, scene, Bounds::at_least(0)), roughness};
+                           read_color_param(*k, scene, Bounds::at_least(0)), roughness, multiscatter};
 }
 
 // What both coated materials share: the coat (its roughness under `roughness_key`) and the
@@ -123,10 +138,12 @@ LobeParams read_lobe(JsonCursor& c, std::string_view type, Scene& scene) {
     bool schlick = fresnel && fresnel->choice("fresnel", kFresnelNames) == "schlick";
     RoughnessParams roughness;
     if (auto v = c.get("roughness")) roughness = read_roughness(*v, scene);
+    // Smooth glass loses nothing between microfacets: multiscatter changes nothing there.
+    const bool multiscatter = read_multiscatter(c);
     // Roughness 0 keeps the smooth lobe of version 1 (and its images, bit for bit).
     if (is_zero(roughness)) return DielectricParams{ior, tint, schlick};
     if (schlick) fresnel->fail("fresnel \"schlick\" is for a smooth dielectric (roughness 0)");
-    return RoughDielectricParams{ior, tint, roughness};
+    return RoughDielectricParams{ior, tint, roughness, multiscatter};
 }
 
 // `mix`: 1 to Bsdf::kMaxLobes materials of the other types, their lobes in one material. Mixes do
