@@ -60,7 +60,9 @@ TEST(MultiscatterChi2, DielectricFromInside) { expect_sampling_fits_pdf(glass(0.
 TEST(MultiscatterChi2, DielectricFromInsidePastTheCriticalAngle) {
     expect_sampling_fits_pdf(glass(0.5f, 1.5f), direction(-0.4f, 1.2f));
 }
-TEST(MultiscatterChi2, DielectricBelowOne) { expect_sampling_fits_pdf(glass(0.5f, 1.0f / 1.33f), direction(0.5f, 2.2f)); }
+TEST(MultiscatterChi2, DielectricBelowOne) {
+    expect_sampling_fits_pdf(glass(0.5f, 1.0f / 1.33f), direction(0.5f, 2.2f));
+}
 TEST(MultiscatterChi2, DielectricAlpha1Grazing) { expect_sampling_fits_pdf(glass(1.0f, 1.5f), direction(0.1f, 0.5f)); }
 TEST(MultiscatterChi2, DielectricAnisotropic) {
     expect_sampling_fits_pdf(DielectricLobe{Rgb(1.0f), 1.5f, TrowbridgeReitz(0.05f, 0.4f)}.with_multiscatter(),

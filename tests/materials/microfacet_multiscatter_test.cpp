@@ -224,7 +224,8 @@ TEST(MicrofacetAlbedoTable, DielectricNodesMatchDirectIntegration) {
     for (const auto& [side, k, i, j] : nodes) {
         float eta = albedo_eta_node(k), alpha = albedo_alpha_node(i), mu = std::max(albedo_mu_node(j), 1e-4f);
         // The lobe's eta is inside over outside: side 1 (leaving the denser medium) is wo inside.
-        double direct = single_scatter_albedo(glass(alpha, eta), direction(side == 0 ? mu : -mu, 0.0f), kImportance, 1e-5);
+        Vec3f wo = direction(side == 0 ? mu : -mu, 0.0f);
+        double direct = single_scatter_albedo(glass(alpha, eta), wo, kImportance, 1e-5);
         EXPECT_NEAR(kDielectricAlbedo[side][k][i][j], direct, 3e-4)
             << "side " << side << ", eta " << eta << ", alpha " << alpha << ", mu " << mu;
     }

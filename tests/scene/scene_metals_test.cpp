@@ -99,8 +99,9 @@ TEST(SceneMultiscatter, OffByDefaultOnWhenAsked) {
 TEST(SceneMultiscatter, ChangesNothingOnSmoothSurfaces) {
     // Smooth glass keeps version 1's lobe; a smooth metal is a mirror, which loses nothing.
     only_lobe<FresnelSpecularLobe>(load_material(R"({"type": "dielectric", "multiscatter": true})"));
-    EXPECT_FALSE(only_lobe<ConductorLobe>(load_material(R"({"type": "conductor", "metal": "Ag", "multiscatter": true})"))
-                     .multiscatter);
+    const auto silver =
+        only_lobe<ConductorLobe>(load_material(R"({"type": "conductor", "metal": "Ag", "multiscatter": true})"));
+    EXPECT_FALSE(silver.multiscatter);
 }
 
 TEST(SceneMultiscatter, TexturedMaterialsBuildCompensatedLobesAtEachHit) {

@@ -12,8 +12,9 @@
 // fraction), where a direction ending on the wrong side carries nothing (the same terms as
 // DielectricLobe::evaluate; microfacet_albedo.h has the references). The integral is over the
 // unit square that TrowbridgeReitz::sample_wm maps onto the visible normals, by the midpoint rule
-// on kQuadrature^2 points (graded towards the rim of the normals, see albedo()), in double. --check also integrates at the centres of the table's
-// cells and prints how far the interpolated table is from them (the tables' interpolation error).
+// on kQuadrature^2 points (graded towards the rim of the normals, see albedo()), in double.
+// --check also integrates at the centres of the table's cells and prints how far the interpolated
+// table is from them (the tables' interpolation error).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -151,7 +152,8 @@ void check(const Tables& t) {
         }
     };
     auto report = [](const char* what, const Worst& w) {
-        std::printf("%s: max |interpolated - integral| %.2e (at mu %.3f alpha %.4f), %.2e where mu and alpha >= 0.01 (at mu %.3f alpha %.4f)\n",
+        std::printf("%s: max |interpolated - integral| %.2e (at mu %.3f alpha %.4f), "
+                    "%.2e where mu and alpha >= 0.01 (at mu %.3f alpha %.4f)\n",
                     what, w.all, double(w.mu), double(w.alpha), w.away, double(w.away_mu), double(w.away_alpha));
     };
     std::vector<Worst> conductor(kAlbedoAlphaCount);
@@ -222,7 +224,8 @@ void write(const Tables& t, const char* path) {
     write_array(f, "const float kConductorAlbedoAvg[kAlbedoAlphaCount]", t.conductor_avg, 8, true);
     write_array(f, "const float kDielectricAlbedo[2][kAlbedoEtaCount][kAlbedoAlphaCount][kAlbedoMuCount]",
                 t.dielectric, 16, false);
-    write_array(f, "const float kDielectricAlbedoAvg[2][kAlbedoEtaCount][kAlbedoAlphaCount]", t.dielectric_avg, 8, true);
+    write_array(f, "const float kDielectricAlbedoAvg[2][kAlbedoEtaCount][kAlbedoAlphaCount]", t.dielectric_avg, 8,
+                true);
     std::fprintf(f, "// clang-format on\n\n}  // namespace candela\n");
     std::fclose(f);
 }

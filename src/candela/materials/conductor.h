@@ -31,7 +31,8 @@ struct ConductorLobe {
     CANDELA_HD ConductorLobe with_multiscatter() const {
         ConductorLobe lobe = *this;
         lobe.multiscatter = !distribution.effectively_smooth();
-        lobe.fresnel_avg = hemispherical_average<Color>([&](float mu) { return fresnel_complex(mu, eta, k); });
+        lobe.fresnel_avg =
+            hemispherical_average<Color>([&](float mu) { return fresnel_complex(mu, eta, k); });
         return lobe;
     }
 
@@ -94,7 +95,8 @@ struct ConductorLobe {
         }
         Vec2f v = u;
         if (multiscatter) {
-            float p = ConductorMultiscatter(multiscatter_alpha(distribution), fresnel_avg).probability(abs_cos_theta(wo));
+            ConductorMultiscatter ms(multiscatter_alpha(distribution), fresnel_avg);
+            float p = ms.probability(abs_cos_theta(wo));
             if (u.x < p) {
                 Vec3f wi = sample_cosine_hemisphere(Vec2f(u.x / p, u.y));
                 if (wo.z < 0.0f) wi.z = -wi.z;

@@ -43,7 +43,8 @@ struct DielectricLobe {
         DielectricLobe lobe = *this;
         lobe.multiscatter = !is_smooth();
         const float eta_big = eta >= 1.0f ? eta : 1.0f / eta;
-        lobe.fresnel_avg = hemispherical_average<float>([&](float mu) { return fresnel_dielectric(mu, eta_big); });
+        lobe.fresnel_avg =
+            hemispherical_average<float>([&](float mu) { return fresnel_dielectric(mu, eta_big); });
         return lobe;
     }
     CANDELA_HD DielectricMultiscatter multiscatter_lobes(bool wo_outside) const {
@@ -153,7 +154,8 @@ struct DielectricLobe {
         return sample_at(wo, wi, mode);
     }
     // The sample for wi (f and pdf of all lobes); nullopt where the pdf is 0.
-    CANDELA_HD std::optional<BsdfSample> sample_at(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
+    CANDELA_HD std::optional<BsdfSample> sample_at(const Vec3f& wo, const Vec3f& wi,
+                                                   TransportMode mode) const {
         std::optional<BsdfSample> result;
         Evaluation e = evaluate(wo, wi, mode);
         if (!(e.pdf > 0.0f)) return result;

@@ -58,7 +58,8 @@ LobeParams read_conductor(JsonCursor& c, Scene& scene) {
     std::optional<JsonCursor> eta = c.get("eta"), k = c.get("k"), reflectance = c.get("reflectance");
     if (std::optional<JsonCursor> metal = c.get("metal")) {
         if (eta || k || reflectance)
-            (eta ? *eta : k ? *k : *reflectance).fail("give one of \"metal\", \"eta\" and \"k\", or \"reflectance\"");
+            (eta ? *eta : k ? *k : *reflectance)
+                .fail("give one of \"metal\", \"eta\" and \"k\", or \"reflectance\"");
         const MetalIor& ior = metal_ior(*parse_metal(metal->choice("metal", metal_names())));
         return ConductorParams{ColorParam{ior.eta}, ColorParam{ior.k}, roughness, multiscatter};
     }
