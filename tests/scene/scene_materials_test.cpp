@@ -16,23 +16,9 @@ namespace {
 using test::load_error;
 using test::load_json;
 
-// A scene whose one material "m" is the JSON object `material`.
-Scene load_material(const std::string& material) {
-    return load_json(R"({"materials": {"m": )" + material + "}}");
-}
-SceneError material_error(const std::string& material) {
-    return load_error(R"({"materials": {"m": )" + material + "}}");
-}
-
-// The one lobe of material "m", as a T (the test fails if it is another lobe).
-template <class T>
-T only_lobe(const Scene& s) {
-    const Bsdf& bsdf = s.materials.at(0).bsdf;
-    EXPECT_EQ(bsdf.lobe_count, 1u);
-    const T* lobe = std::get_if<T>(&bsdf.lobes[0]);
-    EXPECT_NE(lobe, nullptr);
-    return lobe != nullptr ? *lobe : T{};
-}
+using test::load_material;
+using test::material_error;
+using test::only_lobe;
 
 TextureContext at(float u, float v) { return TextureContext{Vec2f(u, v), Vec3f(0.0f)}; }
 

@@ -16,21 +16,9 @@ namespace {
 using test::load_error;
 using test::load_json;
 
-Scene load_material(const std::string& material) {
-    return load_json(R"({"materials": {"m": )" + material + "}}");
-}
-SceneError material_error(const std::string& material) {
-    return load_error(R"({"materials": {"m": )" + material + "}}");
-}
-
-template <class T>
-T only_lobe(const Scene& s) {
-    const Bsdf& bsdf = s.materials.at(0).bsdf;
-    EXPECT_EQ(bsdf.lobe_count, 1u);
-    const T* lobe = std::get_if<T>(&bsdf.lobes[0]);
-    EXPECT_NE(lobe, nullptr);
-    return lobe != nullptr ? *lobe : T{};
-}
+using test::load_material;
+using test::material_error;
+using test::only_lobe;
 
 // ---- metal
 

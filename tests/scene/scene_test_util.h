@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <string>
 #include <string_view>
+#include <variant>
 
 #include "candela/core/error.h"
 #include "candela/scene/scene_loader.h"
@@ -29,6 +31,24 @@ inline SceneError load_error(std::string_view json) {
     }
     ADD_FAILURE() << "expected a SceneError loading " << json;
     return SceneError(SourceLocation{}, "no error");
+}
+
+// A scene whose one material "m" is the JSON object `material`, and the error loading it throws.
+inline Scene load_material(const std::string& material) {
+    return load_json(R"({"materials": {"m": )" + material + "}}");
+}
+inline SceneError material_error(const std::string& material) {
+    return load_error(R"({"materials": {"m": )" + material + "}}");
+}
+
+// The one lobe of material "m", as a T (the test fails if it is another lobe).
+template <class T>
+T only_lobe(const Scene& s) {
+    const Bsdf& bsdf = s.materials.at(0).bsdf;
+    EXPECT_EQ(bsdf.lobe_count, 1u);
+    const T* lobe = std::get_if<T>(&bsdf.lobes[0]);
+    EXPECT_NE(lobe, nullptr);
+    return lobe != nullptr ? *lobe : T{};
 }
 
 }  // namespace candela::test
