@@ -50,7 +50,7 @@ void sphere_bounds(const RTCBoundsFunctionArguments* args) {
 }
 
 std::optional<double> intersect_embree_ray(const Sphere& s, const RTCRay& r) {
-    return intersect_sphere(s, Vec3d(r.org_x, r.org_y, r.org_z), Vec3d(r.dir_x, r.dir_y, r.dir_z),
+    return intersect_sphere(s, Vec3d(Vec3f(r.org_x, r.org_y, r.org_z)), Vec3d(Vec3f(r.dir_x, r.dir_y, r.dir_z)),
                             double(r.tnear), double(r.tfar));
 }
 
@@ -105,7 +105,7 @@ void disk_bounds(const RTCBoundsFunctionArguments* args) {
 }
 
 std::optional<double> intersect_embree_ray(const Disk& d, const RTCRay& r) {
-    return intersect_disk(d, Vec3d(r.org_x, r.org_y, r.org_z), Vec3d(r.dir_x, r.dir_y, r.dir_z), double(r.tnear),
+    return intersect_disk(d, Vec3d(Vec3f(r.org_x, r.org_y, r.org_z)), Vec3d(Vec3f(r.dir_x, r.dir_y, r.dir_z)), double(r.tnear),
                           double(r.tfar));
 }
 
