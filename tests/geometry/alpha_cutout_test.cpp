@@ -94,8 +94,8 @@ TEST(AlphaCutout, TexturedAlphaCutsWhereTheTextureIsZero) {
     CutoutScene plain(1.0f);
     TextureSet textures;
     CheckerboardTexture checks;
-    checks.color0 = ColorParam{Color(1.0f)};
-    checks.color1 = ColorParam{Color(0.0f)};
+    checks.color0 = ColorParam{Rgb(1.0f)};
+    checks.color1 = ColorParam{Rgb(0.0f)};
     checks.uv.scale = Vec2f(40.0f, 40.0f);
     AlphaCutouts cutouts;
     cutouts.shape_alpha = {FloatParam{1.0f, textures.add(checks), 0.0f, 1.0f}, FloatParam{1.0f}, FloatParam{1.0f}};

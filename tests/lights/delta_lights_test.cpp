@@ -27,11 +27,11 @@ TEST(PointLight, IrradianceFallsWithTheSquareOfTheDistance) {
     EXPECT_NEAR(s->wi.y, 2.0f / 3.0f, 1e-7f);
     EXPECT_NEAR(s->wi.z, 2.0f / 3.0f, 1e-7f);
     EXPECT_FALSE(s->infinite);
-    EXPECT_FLOAT_EQ(s->Li.r, 1.0f);  // I / r^2, r = 3
-    EXPECT_FLOAT_EQ(s->Li.g, 2.0f);
-    EXPECT_FLOAT_EQ(s->Li.b, 3.0f);
+    EXPECT_FLOAT_EQ(s->Li[0], 1.0f);  // I / r^2, r = 3
+    EXPECT_FLOAT_EQ(s->Li[1], 2.0f);
+    EXPECT_FLOAT_EQ(s->Li[2], 3.0f);
     EXPECT_FALSE(light.sample(light.position));  // no direction from the light itself
-    EXPECT_FLOAT_EQ(light.power(1.0f), 4.0f * kPi * Color(9.0f, 18.0f, 27.0f).luminance());
+    EXPECT_FLOAT_EQ(light.power(1.0f), 4.0f * kPi * Rgb(9.0f, 18.0f, 27.0f).luminance());
 }
 
 // A spot at the origin pointing down +z with cone_angle 40 and cone_delta 15 degrees.
@@ -68,7 +68,7 @@ TEST(SpotLight, FallsOffAsTheSmoothstepOfTheCosine) {
         ASSERT_TRUE(s) << degrees;
         float t = (std::cos(radians(degrees)) - ce) / (cs - ce);
         float expected = 2.0f * (t >= 1.0f ? 1.0f : t * t * (3.0f - 2.0f * t)) / 4.0f;
-        EXPECT_NEAR(s->Li.g, expected, 2e-6f) << degrees << " degrees";
+        EXPECT_NEAR(s->Li[1], expected, 2e-6f) << degrees << " degrees";
         EXPECT_NEAR(dot(s->wi, -normalize(at_angle(degrees, 1.0f))), 1.0f, 1e-6f);
     }
     EXPECT_FALSE(light.sample(at_angle(40.5f, 2.0f)));
@@ -116,7 +116,7 @@ TEST(DirectionalLight, ArrivesFromAgainstItsDirectionFromInfinitelyFar) {
         EXPECT_EQ(s->p, ref - light.direction);
     }
     // Power: E over the disk of the scene's bounding sphere, pi r^2 E.
-    EXPECT_FLOAT_EQ(light.power(2.0f), kPi * 4.0f * Color(0.5f, 1.0f, 1.5f).luminance());
+    EXPECT_FLOAT_EQ(light.power(2.0f), kPi * 4.0f * Rgb(0.5f, 1.0f, 1.5f).luminance());
 }
 
 // A quad light (area 1, radiance 2), a constant environment of radiance 0.5, and a point, a spot

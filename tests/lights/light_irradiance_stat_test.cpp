@@ -30,7 +30,7 @@ Estimate estimate_irradiance(const LightSet& lights, const Vec3f& x, const Vec3f
         double f = 0.0;
         if (std::optional<LightSample> s = lights.sample(x, uc, u)) {
             double cos_theta = static_cast<double>(dot(n, normalize(s->p - x)));
-            if (cos_theta > 0.0) f = static_cast<double>(s->Le.g) * cos_theta / static_cast<double>(s->pdf);
+            if (cos_theta > 0.0) f = static_cast<double>(s->Le[1]) * cos_theta / static_cast<double>(s->pdf);
         }
         sum += f;
         sum2 += f * f;

@@ -77,7 +77,7 @@ void expect_rough_sampling_fits_pdf(const Bsdf& bsdf, Vec3f wo, bool narrow = fa
     EXPECT_NEAR(r.pdf_integral, p, 5.0 * std::sqrt(p * (1.0 - p) / n) + 1e-4);
 }
 
-Bsdf lambertian() { return bsdf_of({LambertianLobe{Rgb(0.7f)}}); }
+Bsdf lambertian() { return bsdf_of({LambertianLobe{Color(0.7f)}}); }
 
 TEST(LambertianChi2, NormalIncidence) {
     expect_sampling_fits_pdf(lambertian(), direction(1.0f, 0.0f), 1.0);
@@ -96,29 +96,29 @@ TEST(LambertianChi2, GrazingBelowTheSurface) {
 }
 
 TEST(MixChi2, LambertianAndMirrorHalveTheDensity) {
-    Bsdf b = bsdf_of({LambertianLobe{Rgb(0.5f)}, SpecularReflectionLobe{Rgb(0.5f)}});
+    Bsdf b = bsdf_of({LambertianLobe{Color(0.5f)}, SpecularReflectionLobe{Color(0.5f)}});
     expect_sampling_fits_pdf(b, direction(0.7f, 0.3f), 0.5);
 }
 TEST(MixChi2, LambertianAndMirrorBelowTheSurface) {
-    Bsdf b = bsdf_of({SpecularReflectionLobe{Rgb(0.5f)}, LambertianLobe{Rgb(0.5f)}});
+    Bsdf b = bsdf_of({SpecularReflectionLobe{Color(0.5f)}, LambertianLobe{Color(0.5f)}});
     expect_sampling_fits_pdf(b, direction(-0.4f, 2.0f), 0.5);
 }
 TEST(MixChi2, LambertianAndDielectric) {
-    Bsdf b = bsdf_of({LambertianLobe{Rgb(0.3f)}, FresnelSpecularLobe{Rgb(1.0f), 1.5f, false}});
+    Bsdf b = bsdf_of({LambertianLobe{Color(0.3f)}, FresnelSpecularLobe{Color(1.0f), 1.5f, false}});
     expect_sampling_fits_pdf(b, direction(0.2f, 1.5f), 0.5);
 }
 TEST(MixChi2, LambertianAndTransmissionUnderTotalInternalReflection) {
     // From inside glass at 60 degrees the transmission lobe fails; its share still counts.
-    Bsdf b = bsdf_of({SpecularTransmissionLobe{Rgb(1.0f), 1.5f}, LambertianLobe{Rgb(0.3f)}});
+    Bsdf b = bsdf_of({SpecularTransmissionLobe{Color(1.0f), 1.5f}, LambertianLobe{Color(0.3f)}});
     expect_sampling_fits_pdf(b, direction(-0.5f, 0.0f), 0.5);
 }
 TEST(MixChi2, TwoLambertiansAreOneCosineDensity) {
-    Bsdf b = bsdf_of({LambertianLobe{Rgb(0.3f)}, LambertianLobe{Rgb(0.6f)}});
+    Bsdf b = bsdf_of({LambertianLobe{Color(0.3f)}, LambertianLobe{Color(0.6f)}});
     expect_sampling_fits_pdf(b, direction(0.8f, -0.5f), 1.0);
 }
 TEST(MixChi2, ThreeLobesWithTwoDelta) {
-    Bsdf b = bsdf_of({SpecularReflectionLobe{Rgb(0.2f)}, LambertianLobe{Rgb(0.3f)},
-                      FresnelSpecularLobe{Rgb(0.4f), 1.33f, true}});
+    Bsdf b = bsdf_of({SpecularReflectionLobe{Color(0.2f)}, LambertianLobe{Color(0.3f)},
+                      FresnelSpecularLobe{Color(0.4f), 1.33f, true}});
     expect_sampling_fits_pdf(b, direction(0.45f, 2.5f), 1.0 / 3.0);
 }
 
@@ -146,7 +146,7 @@ TEST(ConductorChi2, AnisotropicNormalIncidence) {
     expect_rough_sampling_fits_pdf(gold(TrowbridgeReitz(0.4f, 0.05f)), direction(1.0f, 0.0f));
 }
 
-Bsdf glass(float eta, TrowbridgeReitz tr) { return bsdf_of({DielectricLobe{Rgb(1.0f), eta, tr}}); }
+Bsdf glass(float eta, TrowbridgeReitz tr) { return bsdf_of({DielectricLobe{Color(1.0f), eta, tr}}); }
 
 TEST(RoughDielectricChi2, NormalIncidence) {
     expect_rough_sampling_fits_pdf(glass(1.5f, TrowbridgeReitz(0.3f)), direction(1.0f, 0.0f));
@@ -183,14 +183,14 @@ TEST(RoughDielectricChi2, AnisotropicFromInside) {
 }
 
 TEST(MixChi2, RoughConductorAndLambertian) {
-    Bsdf b = bsdf_of({ConductorLobe{TrowbridgeReitz(0.3f), kGoldEta, kGoldK}, LambertianLobe{Rgb(0.5f)}});
+    Bsdf b = bsdf_of({ConductorLobe{TrowbridgeReitz(0.3f), kGoldEta, kGoldK}, LambertianLobe{Color(0.5f)}});
     expect_rough_sampling_fits_pdf(b, direction(0.4f, 1.0f));
 }
 TEST(MixChi2, RoughDielectricAndSmoothDielectric) {
     // The smooth lobe's samples are delta (left out), so the pdf integrates to half the rough
     // lobe's success probability.
-    Bsdf b = bsdf_of({DielectricLobe{Rgb(1.0f), 1.5f, TrowbridgeReitz(0.2f)},
-                      DielectricLobe{Rgb(1.0f), 1.5f, TrowbridgeReitz(0.0f)}});
+    Bsdf b = bsdf_of({DielectricLobe{Color(1.0f), 1.5f, TrowbridgeReitz(0.2f)},
+                      DielectricLobe{Color(1.0f), 1.5f, TrowbridgeReitz(0.0f)}});
     expect_rough_sampling_fits_pdf(b, direction(-0.7f, 1.0f));
 }
 
@@ -210,7 +210,7 @@ Estimate directional_albedo(const Bsdf& bsdf, Vec3f wo, TransportMode mode, uint
     for (int i = 0; i < kFurnaceSamples; ++i) {
         float uc = rng.next_float();
         auto s = bsdf.sample(wo, uc, rng.next_vec2f(), mode);
-        double w = s ? double(s->f.r) * double(std::abs(s->wi.z)) / double(s->pdf) : 0.0;
+        double w = s ? double(s->f[0]) * double(std::abs(s->wi.z)) / double(s->pdf) : 0.0;
         sum += w;
         sum_sq += w * w;
     }
@@ -241,20 +241,20 @@ TEST(LobeFurnace, EveryLobeSampledGivesItsDirectionalAlbedo) {
         for (const Vec3f& wo : probe_directions()) {
             SCOPED_TRACE(testing::Message() << c.name << ", wo.z = " << wo.z);
             double expected = visit(
-                Overloaded{[](const LambertianLobe& l) { return double(l.reflectance.r); },
-                           [](const SpecularReflectionLobe& l) { return double(l.reflectance.r); },
-                           [](const FresnelSpecularLobe& l) { return double(l.tint.r); },
+                Overloaded{[](const LambertianLobe& l) { return double(l.reflectance[0]); },
+                           [](const SpecularReflectionLobe& l) { return double(l.reflectance[0]); },
+                           [](const FresnelSpecularLobe& l) { return double(l.tint[0]); },
                            [&](const SpecularTransmissionLobe& l) {
                                double f = double(fresnel_dielectric(wo.z, l.eta));
-                               return double(l.tint.r) * (1.0 - f);
+                               return double(l.tint[0]) * (1.0 - f);
                            },
                            [&](const ConductorLobe& l) {
                                if (l.distribution.effectively_smooth())
-                                   return double(fresnel_complex(std::abs(wo.z), l.eta, l.k).r);
+                                   return double(fresnel_complex(std::abs(wo.z), l.eta, l.k)[0]);
                                return albedo_by_quadrature(l, wo, TransportMode::kImportance);
                            },
                            [&](const DielectricLobe& l) {
-                               if (l.is_smooth()) return double(l.tint.r);
+                               if (l.is_smooth()) return double(l.tint[0]);
                                return albedo_by_quadrature(l, wo, TransportMode::kImportance);
                            },
                            [](const ThinDielectricLobe&) { return 1.0; },
@@ -287,14 +287,14 @@ TEST(LobeFurnace, PerfectConductorReflectsItsSingleScatteringAlbedo) {
 TEST(LobeFurnace, LambertianEvalIntegratesToItsAlbedo) {
     // Independent of the sampler: integrate f |cos| over the sphere with uniform directions.
     // The estimator 4 pi f |cos| has variance 5 albedo^2 / 3, bounded here by its measured one.
-    LambertianLobe lobe{Rgb(0.7f)};
+    LambertianLobe lobe{Color(0.7f)};
     for (const Vec3f& wo : {direction(0.8f, 0.0f), direction(-0.3f, 1.0f)}) {
         Rng rng(23, 9);
         double sum = 0.0, sum_sq = 0.0;
         const int n = 400'000;
         for (int i = 0; i < n; ++i) {
             Vec3f wi = sample_uniform_sphere(rng.next_vec2f());
-            double f = lobe.eval(wo, wi, kRadiance).r;
+            double f = lobe.eval(wo, wi, kRadiance)[0];
             double w = f * double(std::abs(wi.z)) / double(kInv4Pi);
             sum += w;
             sum_sq += w * w;
@@ -307,7 +307,7 @@ TEST(LobeFurnace, LambertianEvalIntegratesToItsAlbedo) {
 TEST(LobeFurnace, HalfDiffuseHalfMirrorIsWhite) {
     // Every sample of 0.5 diffuse + 0.5 mirror weighs exactly 1 (see bsdf_test.cpp), so the
     // estimate has no variance.
-    Bsdf b = bsdf_of({LambertianLobe{Rgb(0.5f)}, SpecularReflectionLobe{Rgb(0.5f)}});
+    Bsdf b = bsdf_of({LambertianLobe{Color(0.5f)}, SpecularReflectionLobe{Color(0.5f)}});
     for (const Vec3f& wo : probe_directions())
         EXPECT_NEAR(directional_albedo(b, wo, kRadiance, 3).mean, 1.0, 1e-5);
 }
@@ -315,7 +315,7 @@ TEST(LobeFurnace, HalfDiffuseHalfMirrorIsWhite) {
 TEST(LobeFurnace, DielectricReflectsWithTheFresnelFrequency) {
     // The fraction of reflected samples is binomial with p = F: within 5 standard deviations.
     for (bool schlick : {false, true}) {
-        FresnelSpecularLobe lobe{Rgb(1.0f), 1.5f, schlick};
+        FresnelSpecularLobe lobe{Color(1.0f), 1.5f, schlick};
         for (const Vec3f& wo : probe_directions()) {
             Rng rng(29, 3);
             const int n = 100'000;

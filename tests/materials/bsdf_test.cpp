@@ -25,24 +25,24 @@ Bsdf bsdf_of(std::initializer_list<BsdfLobe> lobes) {
 TEST(Bsdf, EmptyIsBlackAndSamplesNothing) {
     Bsdf b;
     Vec3f wo = direction(0.5f, 0.0f), wi = direction(0.7f, 2.0f);
-    EXPECT_EQ(b.eval(wo, wi, kRadiance), Rgb(0.0f));
+    EXPECT_EQ(b.eval(wo, wi, kRadiance), Color(0.0f));
     EXPECT_EQ(b.pdf(wo, wi), 0.0f);
     EXPECT_FALSE(b.sample(wo, 0.5f, Vec2f(0.5f, 0.5f), kRadiance));
-    EXPECT_EQ(b.albedo(), Rgb(0.0f));
+    EXPECT_EQ(b.albedo(), Color(0.0f));
 }
 
 TEST(Bsdf, TwoLobesSumTheirValuesAndAverageTheirPdfs) {
     // Two Lambertian lobes: the values add (not divided by the lobe count), and the average of
     // two equal cosine densities is the cosine density.
-    Bsdf b = bsdf_of({LambertianLobe{Rgb(0.2f)}, LambertianLobe{Rgb(0.3f, 0.4f, 0.5f)}});
+    Bsdf b = bsdf_of({LambertianLobe{Color(0.2f)}, LambertianLobe{Color(0.3f, 0.4f, 0.5f)}});
     Vec3f wo = direction(0.5f, 0.0f), wi = direction(0.8f, 2.0f);
-    Rgb expected_f = Rgb(0.5f, 0.6f, 0.7f) * kInvPi;
-    Rgb f = b.eval(wo, wi, kRadiance);
-    EXPECT_FLOAT_EQ(f.r, expected_f.r);
-    EXPECT_FLOAT_EQ(f.g, expected_f.g);
-    EXPECT_FLOAT_EQ(f.b, expected_f.b);
+    Color expected_f = Color(0.5f, 0.6f, 0.7f) * kInvPi;
+    Color f = b.eval(wo, wi, kRadiance);
+    EXPECT_FLOAT_EQ(f[0], expected_f[0]);
+    EXPECT_FLOAT_EQ(f[1], expected_f[1]);
+    EXPECT_FLOAT_EQ(f[2], expected_f[2]);
     EXPECT_FLOAT_EQ(b.pdf(wo, wi), 0.8f * kInvPi);
-    EXPECT_EQ(b.albedo(), Rgb(0.5f, 0.6f, 0.7f));
+    EXPECT_EQ(b.albedo(), Color(0.5f, 0.6f, 0.7f));
     // Either lobe's sample carries the whole sum.
     for (float uc : {0.1f, 0.9f}) {
         auto s = b.sample(wo, uc, Vec2f(0.3f, 0.6f), kRadiance);
@@ -55,10 +55,10 @@ TEST(Bsdf, TwoLobesSumTheirValuesAndAverageTheirPdfs) {
 TEST(Bsdf, DeltaLobesAddNoDensityButHalveTheChoice) {
     // Diffuse + mirror: the pdf is half the cosine density; a mirror sample keeps the mirror's
     // f with probability 1/2, so its weight doubles (and averages out over the lobe choice).
-    Bsdf b = bsdf_of({LambertianLobe{Rgb(0.5f)}, SpecularReflectionLobe{Rgb(0.5f)}});
+    Bsdf b = bsdf_of({LambertianLobe{Color(0.5f)}, SpecularReflectionLobe{Color(0.5f)}});
     Vec3f wo = direction(0.6f, 1.0f), wi = direction(0.3f, -2.0f);
     EXPECT_FLOAT_EQ(b.pdf(wo, wi), 0.5f * 0.3f * kInvPi);
-    EXPECT_EQ(b.eval(wo, wi, kRadiance), Rgb(0.5f * kInvPi));
+    EXPECT_EQ(b.eval(wo, wi, kRadiance), Color(0.5f * kInvPi));
     EXPECT_FALSE(b.is_delta_only());
 
     auto diffuse = b.sample(wo, 0.25f, Vec2f(0.3f, 0.6f), kRadiance);
@@ -72,16 +72,16 @@ TEST(Bsdf, DeltaLobesAddNoDensityButHalveTheChoice) {
     EXPECT_TRUE(mirror->is_delta);
     EXPECT_EQ(mirror->wi, Vec3f(-wo.x, -wo.y, wo.z));
     EXPECT_EQ(mirror->pdf, 0.5f);
-    EXPECT_FLOAT_EQ(mirror->f.r, 0.5f / wo.z);
+    EXPECT_FLOAT_EQ(mirror->f[0], 0.5f / wo.z);
     // Both strategies weigh 1 here: 0.5 diffuse + 0.5 mirror is a white furnace.
     for (const auto& s : {*diffuse, *mirror})
-        EXPECT_NEAR(s.f.r * std::abs(s.wi.z) / s.pdf, 1.0f, 1e-6f);
+        EXPECT_NEAR(s.f[0] * std::abs(s.wi.z) / s.pdf, 1.0f, 1e-6f);
 }
 
 TEST(Bsdf, LobeChoiceIsRemappedForTheLobesOwnChoice) {
     // uc in [0.5, 1) picks the dielectric, then is stretched back to [0, 1): the glass reflects
     // when the stretched value is below F (0.04 at normal incidence) and refracts above.
-    Bsdf b = bsdf_of({LambertianLobe{Rgb(0.5f)}, FresnelSpecularLobe{Rgb(1.0f), 1.5f, false}});
+    Bsdf b = bsdf_of({LambertianLobe{Color(0.5f)}, FresnelSpecularLobe{Color(1.0f), 1.5f, false}});
     Vec3f wo(0, 0, 1);
     auto reflected = b.sample(wo, 0.5f + 0.5f * 0.03f, Vec2f(), kRadiance);
     ASSERT_TRUE(reflected);
@@ -169,23 +169,23 @@ TEST(Bsdf, UsesChoiceOnlyWhenALobeReadsIt) {
 TEST(Material, ConstructorsMakeOneLobeOfTheirKind) {
     Material d = make_diffuse(Rgb(0.1f, 0.2f, 0.3f));
     ASSERT_EQ(d.bsdf.lobe_count, 1u);
-    EXPECT_EQ(std::get<LambertianLobe>(d.bsdf.lobes[0]).reflectance, Rgb(0.1f, 0.2f, 0.3f));
-    EXPECT_EQ(material_albedo(d), Rgb(0.1f, 0.2f, 0.3f));
+    EXPECT_EQ(std::get<LambertianLobe>(d.bsdf.lobes[0]).reflectance, Color(0.1f, 0.2f, 0.3f));
+    EXPECT_EQ(material_albedo(d), Color(0.1f, 0.2f, 0.3f));
 
     Material m = make_mirror(Rgb(0.9f));
-    EXPECT_EQ(std::get<SpecularReflectionLobe>(m.bsdf.lobes[0]).reflectance, Rgb(0.9f));
+    EXPECT_EQ(std::get<SpecularReflectionLobe>(m.bsdf.lobes[0]).reflectance, Color(0.9f));
 
     Material g = make_dielectric(1.33f, Rgb(0.5f), true);
     const auto& glass = std::get<FresnelSpecularLobe>(g.bsdf.lobes[0]);
     EXPECT_EQ(glass.eta, 1.33f);
-    EXPECT_EQ(glass.tint, Rgb(0.5f));
+    EXPECT_EQ(glass.tint, Color(0.5f));
     EXPECT_TRUE(glass.schlick);
-    EXPECT_EQ(material_albedo(g), Rgb(0.5f));
+    EXPECT_EQ(material_albedo(g), Color(0.5f));
 
     Material t = make_transmission(2.4f, Rgb(0.7f));
     const auto& transmission = std::get<SpecularTransmissionLobe>(t.bsdf.lobes[0]);
     EXPECT_EQ(transmission.eta, 2.4f);
-    EXPECT_EQ(transmission.tint, Rgb(0.7f));
+    EXPECT_EQ(transmission.tint, Color(0.7f));
 }
 
 TEST(Material, MixConcatenatesLobesAndSumsAlbedos) {
@@ -196,7 +196,7 @@ TEST(Material, MixConcatenatesLobesAndSumsAlbedos) {
     EXPECT_TRUE(std::holds_alternative<LambertianLobe>(mix.bsdf.lobes[0]));
     EXPECT_TRUE(std::holds_alternative<SpecularReflectionLobe>(mix.bsdf.lobes[1]));
     EXPECT_TRUE(std::holds_alternative<FresnelSpecularLobe>(mix.bsdf.lobes[2]));
-    EXPECT_EQ(material_albedo(mix), Rgb(1.75f));
+    EXPECT_EQ(material_albedo(mix), Color(1.75f));
 }
 
 }  // namespace

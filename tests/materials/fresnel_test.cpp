@@ -183,9 +183,9 @@ TEST(FresnelComplex, NormalIncidenceAndLimits) {
     // compiler may contract the two forms' multiply-adds differently (clang's default
     // -ffp-contract=on did in the sanitizer build).
     Color f = fresnel_complex(0.6f, Color(0.2f, 1.5f, 0.0f), Color(3.0f, 0.0f, 1.0f));
-    EXPECT_NEAR(f.r, fresnel_complex(0.6f, 0.2f, 3.0f), 1e-6f);
-    EXPECT_NEAR(f.g, fresnel_complex(0.6f, 1.5f, 0.0f), 1e-6f);
-    EXPECT_NEAR(f.b, fresnel_complex(0.6f, 0.0f, 1.0f), 1e-6f);
+    EXPECT_NEAR(f[0], fresnel_complex(0.6f, 0.2f, 3.0f), 1e-6f);
+    EXPECT_NEAR(f[1], fresnel_complex(0.6f, 1.5f, 0.0f), 1e-6f);
+    EXPECT_NEAR(f[2], fresnel_complex(0.6f, 0.0f, 1.0f), 1e-6f);
 }
 
 TEST(Reflect, MirrorsAboutTheNormal) {

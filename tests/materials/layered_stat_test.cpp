@@ -51,7 +51,7 @@ constexpr TransportMode kImportance = TransportMode::kImportance;
 constexpr int kChi2Tests = 19;
 
 // The sum of a colour's channels: the tests compare one linear functional of f.
-double channel_sum(const Rgb& c) { return double(c.r) + double(c.g) + double(c.b); }
+double channel_sum(const Color& c) { return double(c[0]) + double(c[1]) + double(c[2]); }
 
 // Mean and standard error of a stream of values.
 struct Moments {
@@ -145,8 +145,8 @@ TEST(CoatInterfaceChi2, AnisotropicReflectionFromOutside) {
 // on wo's side, integrating to (1 - F(cos_o)) (1 - r^K), K = (max_depth + 1) / 2.
 void expect_smooth_coat_exits_fit(Vec3f wo, int max_depth) {
     const double eta = 1.5;
-    CoatedDiffuseLobe lobe{CoatInterface{float(eta), TrowbridgeReitz(0.0f)}, LambertianLobe{Rgb(1.0f)},
-                           Rgb(0.0f), 0.0f, 0.0f, static_cast<uint16_t>(max_depth), 1};
+    CoatedDiffuseLobe lobe{CoatInterface{float(eta), TrowbridgeReitz(0.0f)}, LambertianLobe{Color(1.0f)},
+                           Color(0.0f), 0.0f, 0.0f, static_cast<uint16_t>(max_depth), 1};
     const double r = internal_diffuse_reflectance(eta);
     const int k = counted_paths(max_depth);
     const double entered = 1.0 - fresnel_reference(std::abs(double(wo.z)), eta);
@@ -282,35 +282,35 @@ void expect_sample_weights_match_eval(const Lobe& lobe, Vec3f wo, TransportMode 
 }
 
 TEST(CoatedSamplingAgreesWithEval, SmoothCoatGreyDiffuse) {
-    CoatedDiffuseLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)}, LambertianLobe{Rgb(0.8f, 0.5f, 0.2f)},
-                           Rgb(0.0f), 0.05f, 0.0f, 10, 1};
+    CoatedDiffuseLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)}, LambertianLobe{Color(0.8f, 0.5f, 0.2f)},
+                           Color(0.0f), 0.05f, 0.0f, 10, 1};
     expect_sample_weights_match_eval(lobe, direction(0.6f, 0.3f), kRadiance);
 }
 TEST(CoatedSamplingAgreesWithEval, RoughCoatScatteringMediumFromBelow) {
-    CoatedDiffuseLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.3f)}, LambertianLobe{Rgb(0.5f, 0.6f, 0.7f)},
-                           Rgb(0.8f, 0.5f, 0.3f), 0.3f, 0.3f, 10, 1};
+    CoatedDiffuseLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.3f)}, LambertianLobe{Color(0.5f, 0.6f, 0.7f)},
+                           Color(0.8f, 0.5f, 0.3f), 0.3f, 0.3f, 10, 1};
     expect_sample_weights_match_eval(lobe, direction(-0.5f, 1.0f), kRadiance);
 }
 TEST(CoatedSamplingAgreesWithEval, SmoothCoatForwardScatteringMediumImportance) {
-    CoatedDiffuseLobe lobe{CoatInterface{1.33f, TrowbridgeReitz(0.0f)}, LambertianLobe{Rgb(0.9f)},
-                           Rgb(0.95f), 0.5f, 0.6f, 10, 1};
+    CoatedDiffuseLobe lobe{CoatInterface{1.33f, TrowbridgeReitz(0.0f)}, LambertianLobe{Color(0.9f)},
+                           Color(0.95f), 0.5f, 0.6f, 10, 1};
     expect_sample_weights_match_eval(lobe, direction(0.3f, -1.0f), kImportance);
 }
 TEST(CoatedSamplingAgreesWithEval, RoughCoatRoughConductor) {
     CoatedConductorLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.15f)},
-                             ConductorLobe{TrowbridgeReitz(0.3f), kGoldEta / 1.5f, kGoldK / 1.5f}, Rgb(0.0f),
+                             ConductorLobe{TrowbridgeReitz(0.3f), kGoldEta / 1.5f, kGoldK / 1.5f}, Color(0.0f),
                              0.01f, 0.0f, 10, 1};
     expect_sample_weights_match_eval(lobe, direction(0.7f, 2.0f), kRadiance);
 }
 TEST(CoatedSamplingAgreesWithEval, SmoothCoatAnisotropicConductorInMedium) {
     CoatedConductorLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)},
                              ConductorLobe{TrowbridgeReitz(0.05f, 0.4f), kGoldEta / 1.5f, kGoldK / 1.5f},
-                             Rgb(0.7f, 0.8f, 0.9f), 0.2f, -0.3f, 10, 1};
+                             Color(0.7f, 0.8f, 0.9f), 0.2f, -0.3f, 10, 1};
     expect_sample_weights_match_eval(lobe, direction(0.5f, 0.7f), kRadiance);
 }
 TEST(CoatedSamplingAgreesWithEval, RoughCoatSmoothConductorGrazing) {
     CoatedConductorLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.4f)},
-                             ConductorLobe{TrowbridgeReitz(0.0f), kGoldEta / 1.5f, kGoldK / 1.5f}, Rgb(0.0f),
+                             ConductorLobe{TrowbridgeReitz(0.0f), kGoldEta / 1.5f, kGoldK / 1.5f}, Color(0.0f),
                              0.05f, 0.0f, 10, 1};
     expect_sample_weights_match_eval(lobe, direction(0.15f, 1.0f), kRadiance);
 }
@@ -318,10 +318,10 @@ TEST(CoatedSamplingAgreesWithEval, RoughCoatSmoothConductorGrazing) {
 TEST(CoatedSamplingAgreesWithEval, ControlDetectsAThreePercentBrighterBase) {
     // The test's power: the sampled lobe's base 3 % brighter than the evaluated one's (about
     // the size of the MIS bias of pbrt-v4's f, layered.h) must be rejected.
-    CoatedDiffuseLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.3f)}, LambertianLobe{Rgb(0.7f)}, Rgb(0.0f),
+    CoatedDiffuseLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.3f)}, LambertianLobe{Color(0.7f)}, Color(0.0f),
                            0.01f, 0.0f, 10, 1};
     CoatedDiffuseLobe brighter = lobe;
-    brighter.base.reflectance = Rgb(0.7f * 1.03f);
+    brighter.base.reflectance = Color(0.7f * 1.03f);
     WeightedChi2 r = sample_weights_vs_eval(lobe, brighter, direction(0.6f, 0.3f), kRadiance);
     EXPECT_LT(r.p_value, sidak_alpha(0.01, kChi2Tests)) << r.message;
 }
@@ -331,8 +331,8 @@ TEST(CoatedSamplingAgreesWithEval, ControlDetectsAThreePercentBrighterBase) {
 TEST(CoatedSamplingAgreesWithEval, MixOfCoatedDiffuseAndLambertian) {
     Bsdf b;
     b.lobes[b.lobe_count++] = CoatedDiffuseLobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)},
-                                                LambertianLobe{Rgb(0.6f, 0.4f, 0.2f)}, Rgb(0.0f), 0.1f, 0.0f, 10, 1};
-    b.lobes[b.lobe_count++] = LambertianLobe{Rgb(0.3f)};
+                                                LambertianLobe{Color(0.6f, 0.4f, 0.2f)}, Color(0.0f), 0.1f, 0.0f, 10, 1};
+    b.lobes[b.lobe_count++] = LambertianLobe{Color(0.3f)};
     Vec3f wo = direction(0.5f, 1.0f);
     WeightedChi2 r = sample_weights_vs_eval_of([&](Vec3f wi) { return b.eval(wo, wi, kRadiance); },
                                                [&](float uc, Vec2f u) { return b.sample(wo, uc, u, kRadiance); }, wo);
@@ -343,7 +343,7 @@ TEST(CoatedSamplingAgreesWithEval, MixOfRoughCoatedConductorAndRoughConductor) {
     b.lobes[b.lobe_count++] = ConductorLobe{TrowbridgeReitz(0.2f), kGoldEta, kGoldK};
     b.lobes[b.lobe_count++] = CoatedConductorLobe{CoatInterface{1.5f, TrowbridgeReitz(0.1f)},
                                                   ConductorLobe{TrowbridgeReitz(0.3f), kGoldEta / 1.5f, kGoldK / 1.5f},
-                                                  Rgb(0.0f), 0.01f, 0.0f, 10, 1};
+                                                  Color(0.0f), 0.01f, 0.0f, 10, 1};
     Vec3f wo = direction(-0.7f, 2.0f);
     WeightedChi2 r = sample_weights_vs_eval_of([&](Vec3f wi) { return b.eval(wo, wi, kImportance); },
                                                [&](float uc, Vec2f u) { return b.sample(wo, uc, u, kImportance); }, wo);
@@ -373,7 +373,7 @@ TEST(CoatedFurnace, WhiteBaseUnderSmoothCoatLosesWhatMaxDepthCuts) {
     // K = (max_depth + 1) / 2: 2 for 3 events, 5 for 10; with max_depth 100, r^50 < 1e-11 and the
     // furnace is white.
     for (int max_depth : {3, 10, 100}) {
-        CoatedDiffuseLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)}, LambertianLobe{Rgb(1.0f)}, Rgb(0.0f),
+        CoatedDiffuseLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)}, LambertianLobe{Color(1.0f)}, Color(0.0f),
                                0.0f, 0.0f, static_cast<uint16_t>(max_depth), 1};
         for (float c : {1.0f, 0.6f, 0.2f, -0.4f}) {
             Vec3f wo = direction(c, 0.5f);
@@ -432,7 +432,7 @@ TEST(CoatedEval, SmoothCoatGreyBaseIsTheSeriesOfInternalReflections) {
     // f = a T(wo) T(wi) / (pi eta^2) sum_{k<K} (a r)^k, K = (max_depth + 1) / 2, for a clear slab
     // of zero thickness (coated_closed_forms.h).
     const float a = 0.6f;
-    CoatedDiffuseLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)}, LambertianLobe{Rgb(a)}, Rgb(0.0f), 0.0f,
+    CoatedDiffuseLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)}, LambertianLobe{Color(a)}, Color(0.0f), 0.0f,
                            0.0f, 10, 16};
     for (auto [co, ci] : {std::pair{0.9f, 0.5f}, std::pair{0.3f, 0.8f}, std::pair{-0.6f, -0.2f}}) {
         SCOPED_TRACE(testing::Message() << co << " " << ci);
@@ -444,11 +444,11 @@ TEST(CoatedEval, SmoothCoatGreyBaseIsTheSeriesOfInternalReflections) {
 }
 
 TEST(CoatedEval, ReciprocalInExpectation) {
-    const CoatedDiffuseLobe diffuse{CoatInterface{1.5f, TrowbridgeReitz(0.3f)}, LambertianLobe{Rgb(0.5f, 0.6f, 0.7f)},
-                                    Rgb(0.8f, 0.5f, 0.3f), 0.3f, 0.3f, 10, 8};
+    const CoatedDiffuseLobe diffuse{CoatInterface{1.5f, TrowbridgeReitz(0.3f)}, LambertianLobe{Color(0.5f, 0.6f, 0.7f)},
+                                    Color(0.8f, 0.5f, 0.3f), 0.3f, 0.3f, 10, 8};
     const CoatedConductorLobe conductor{CoatInterface{1.5f, TrowbridgeReitz(0.2f)},
                                         ConductorLobe{TrowbridgeReitz(0.3f), kGoldEta / 1.5f, kGoldK / 1.5f},
-                                        Rgb(0.6f), 0.2f, -0.4f, 10, 8};
+                                        Color(0.6f), 0.2f, -0.4f, 10, 8};
     for (auto [co, ci] : {std::pair{0.9f, 0.4f}, std::pair{0.2f, 0.7f}}) {
         Vec3f a = direction(co, 0.3f), b = direction(ci, 2.5f);
         SCOPED_TRACE(testing::Message() << co << " " << ci);

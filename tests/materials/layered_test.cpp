@@ -18,8 +18,8 @@ namespace {
 constexpr TransportMode kRadiance = TransportMode::kRadiance;
 constexpr TransportMode kImportance = TransportMode::kImportance;
 
-CoatedDiffuseLobe coated_diffuse(float alpha, Rgb base, int max_depth = 10, float thickness = 0.01f) {
-    return CoatedDiffuseLobe{CoatInterface{1.5f, TrowbridgeReitz(alpha)}, LambertianLobe{base}, Rgb(0.0f),
+CoatedDiffuseLobe coated_diffuse(float alpha, Color base, int max_depth = 10, float thickness = 0.01f) {
+    return CoatedDiffuseLobe{CoatInterface{1.5f, TrowbridgeReitz(alpha)}, LambertianLobe{base}, Color(0.0f),
                              thickness, 0.0f, static_cast<uint16_t>(max_depth), 1};
 }
 
@@ -41,7 +41,7 @@ TEST(LayeredLobe, EstimatesAreFixedFunctionsOfTheirArguments) {
     // directions draw other random numbers.
     for_each_layered_case([](const auto& lobe) {
         Vec3f wo = direction(0.7f, 0.2f), wi = direction(0.4f, 2.0f), wi2 = direction(0.4f, 2.001f);
-        Rgb f = lobe.eval(wo, wi, kRadiance);
+        Color f = lobe.eval(wo, wi, kRadiance);
         float pdf = lobe.pdf(wo, wi);
         auto s = lobe.sample(wo, 0.3f, Vec2f(0.6f, 0.1f), kRadiance);
         lobe.eval(wo, wi2, kRadiance);
@@ -67,7 +67,7 @@ TEST(LayeredLobe, TwoSidedAndOpaque) {
             if (wo.z < 0.0f) wi = -wi;
             EXPECT_EQ(lobe.eval(wo, wi, kRadiance), lobe.eval(-wo, -wi, kRadiance));
             EXPECT_EQ(lobe.pdf(wo, wi), lobe.pdf(-wo, -wi));
-            EXPECT_EQ(lobe.eval(wo, -wi, kRadiance), Rgb(0.0f));
+            EXPECT_EQ(lobe.eval(wo, -wi, kRadiance), Color(0.0f));
             EXPECT_EQ(lobe.pdf(wo, -wi), lobe.is_delta() ? 0.0f : 0.1f * kInv4Pi);
             if (!lobe.is_delta()) {
                 EXPECT_GE(lobe.pdf(wo, wi), 0.1f * kInv4Pi);
@@ -80,7 +80,7 @@ TEST(CoatedDiffuse, OneEventIsTheSingleBounceClosedForm) {
     // With max_depth 1 the walk ends at its first base event, joined to wi through the smooth
     // coat: f = a T(wo) T(wi) exp(-d / cos_to) exp(-d / cos_ti) / (pi eta^2), cos_t the refracted
     // cosines (the slab's transmittance along the refracted paths). Nothing is random.
-    const Rgb a(0.8f, 0.5f, 0.2f);
+    const Color a(0.8f, 0.5f, 0.2f);
     const double d = 0.3;
     CoatedDiffuseLobe lobe = coated_diffuse(0.0f, a, 1, float(d));
     auto cos_refracted = [](double c) { return std::sqrt(1.0 - (1.0 - c * c) / 2.25); };
@@ -89,9 +89,9 @@ TEST(CoatedDiffuse, OneEventIsTheSingleBounceClosedForm) {
             double expected = (1.0 - fresnel_reference(co, 1.5)) * (1.0 - fresnel_reference(ci, 1.5)) *
                               std::exp(-d / cos_refracted(co)) * std::exp(-d / cos_refracted(ci)) / (kPiD * 2.25);
             for (TransportMode mode : {kRadiance, kImportance}) {
-                Rgb f = lobe.eval(direction(co, 0.5f), direction(ci, 2.0f), mode);
-                EXPECT_NEAR(f.r, double(a.r) * expected, 2e-6 + 1e-5 * expected) << co << " " << ci;
-                EXPECT_NEAR(f.b, double(a.b) * expected, 2e-6 + 1e-5 * expected) << co << " " << ci;
+                Color f = lobe.eval(direction(co, 0.5f), direction(ci, 2.0f), mode);
+                EXPECT_NEAR(f[0], double(a[0]) * expected, 2e-6 + 1e-5 * expected) << co << " " << ci;
+                EXPECT_NEAR(f[2], double(a[2]) * expected, 2e-6 + 1e-5 * expected) << co << " " << ci;
             }
         }
     }
@@ -102,7 +102,7 @@ TEST(CoatedDiffuse, SmoothCoatPdfIsPbrtsClosedForm) {
     // the coat's reflection having no density; the refraction of wo is fixed, so for a
     // Lambertian base this is 0.9 cos_t(wi) / pi, with no randomness.
     for (int n_samples : {1, 3}) {
-        CoatedDiffuseLobe lobe = coated_diffuse(0.0f, Rgb(0.5f));
+        CoatedDiffuseLobe lobe = coated_diffuse(0.0f, Color(0.5f));
         lobe.n_samples = static_cast<uint16_t>(n_samples);
         for (float co : {0.9f, -0.4f}) {
             for (float ci : {0.95f, 0.5f, 0.02f}) {
@@ -117,11 +117,11 @@ TEST(CoatedDiffuse, SmoothCoatPdfIsPbrtsClosedForm) {
 
 TEST(CoatedConductor, SmoothCoatOverSmoothMetalInClearMediumIsDelta) {
     CoatedConductorLobe lobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)},
-                             ConductorLobe{TrowbridgeReitz(0.0f), kGoldEta / 1.5f, kGoldK / 1.5f}, Rgb(0.0f),
+                             ConductorLobe{TrowbridgeReitz(0.0f), kGoldEta / 1.5f, kGoldK / 1.5f}, Color(0.0f),
                              0.01f, 0.0f, 10, 1};
     EXPECT_TRUE(lobe.is_delta());
     Vec3f wo = direction(0.6f, 0.4f);
-    EXPECT_EQ(lobe.eval(wo, Vec3f(-wo.x, -wo.y, wo.z), kRadiance), Rgb(0.0f));
+    EXPECT_EQ(lobe.eval(wo, Vec3f(-wo.x, -wo.y, wo.z), kRadiance), Color(0.0f));
     EXPECT_EQ(lobe.pdf(wo, Vec3f(-wo.x, -wo.y, wo.z)), 0.0f);
     Rng rng(3, 3);
     for (int i = 0; i < 100; ++i) {
@@ -132,17 +132,17 @@ TEST(CoatedConductor, SmoothCoatOverSmoothMetalInClearMediumIsDelta) {
         EXPECT_NEAR(s->wi.z, wo.z, 1e-5f);
     }
     // Medium scattering or a rough layer makes it non-delta.
-    lobe.medium_albedo = Rgb(0.5f);
+    lobe.medium_albedo = Color(0.5f);
     EXPECT_FALSE(lobe.is_delta());
-    lobe.medium_albedo = Rgb(0.0f);
+    lobe.medium_albedo = Color(0.0f);
     lobe.base.distribution = TrowbridgeReitz(0.1f);
     EXPECT_FALSE(lobe.is_delta());
 }
 
 TEST(CoatedLobes, OnlyASmoothCoatGivesDeltaSamples) {
     Rng rng(4, 1);
-    CoatedDiffuseLobe rough = coated_diffuse(0.2f, Rgb(0.5f));
-    CoatedDiffuseLobe smooth = coated_diffuse(0.0f, Rgb(0.5f));
+    CoatedDiffuseLobe rough = coated_diffuse(0.2f, Color(0.5f));
+    CoatedDiffuseLobe smooth = coated_diffuse(0.0f, Color(0.5f));
     Vec3f wo = direction(0.5f, 0.0f);
     int mirror = 0;
     for (int i = 0; i < 2000; ++i) {
@@ -177,11 +177,11 @@ TEST(CoatedParams, BuildTheLobesAsPbrtGetBxDF) {
     d.coat.max_depth = 7;
     d.coat.n_samples = 3;
     auto cd = std::get<CoatedDiffuseLobe>(d.lobe(textures, ctx));
-    EXPECT_EQ(cd.base.reflectance, Rgb(1.0f, 0.5f, 0.0f));  // clamped to [0, 1]
+    EXPECT_EQ(cd.base.reflectance, Color(1.0f, 0.5f, 0.0f));  // clamped to [0, 1]
     EXPECT_EQ(cd.coat.eta, 1.0f);                           // pbrt-v4: an index of 0 means 1
     EXPECT_EQ(cd.coat.distribution.alpha_x, 0.2f);
     EXPECT_EQ(cd.coat.distribution.alpha_y, 0.05f);
-    EXPECT_EQ(cd.medium_albedo, Rgb(1.0f, 0.5f, 0.25f));
+    EXPECT_EQ(cd.medium_albedo, Color(1.0f, 0.5f, 0.25f));
     EXPECT_EQ(cd.g, -1.0f);
     EXPECT_EQ(cd.thickness, 0.2f);
     EXPECT_EQ(cd.max_depth, 7);
@@ -197,19 +197,19 @@ TEST(CoatedParams, BuildTheLobesAsPbrtGetBxDF) {
     c.conductor_roughness.alpha_u = FloatParam{0.3f};
     c.conductor_roughness.alpha_v = FloatParam{0.3f};
     auto cc = std::get<CoatedConductorLobe>(c.lobe(textures, ctx));
-    EXPECT_EQ(cc.base.eta, Rgb(0.4f, 0.8f, 1.2f));
-    EXPECT_EQ(cc.base.k, Rgb(2.0f, 1.6f, 1.0f));
+    EXPECT_EQ(cc.base.eta, Color(0.4f, 0.8f, 1.2f));
+    EXPECT_EQ(cc.base.k, Color(2.0f, 1.6f, 1.0f));
     EXPECT_EQ(cc.base.distribution.alpha_x, 0.3f);
     c.from_reflectance = true;
     c.reflectance = ColorParam{Rgb(0.64f, 1.0f, 0.0f)};
     auto cr = std::get<CoatedConductorLobe>(c.lobe(textures, ctx));
-    EXPECT_EQ(cr.base.eta, Rgb(0.8f));
+    EXPECT_EQ(cr.base.eta, Color(0.8f));
     // Red: r = 0.64 gives k = 2 (0.8) / 0.6, at normal incidence reflecting r (before the coat's
     // division). Green: r = 1 is clamped to 0.9999, where k stays finite. Blue: r = 0, k = 0.
-    EXPECT_NEAR(cr.base.k.r, 2.0f * 0.8f / 0.6f / 1.25f, 1e-5f);
+    EXPECT_NEAR(cr.base.k[0], 2.0f * 0.8f / 0.6f / 1.25f, 1e-5f);
     EXPECT_NEAR(fresnel_complex(1.0f, 1.0f, 2.0f * 0.8f / 0.6f), 0.64f, 1e-5f);
-    EXPECT_NEAR(cr.base.k.g, 2.0 * std::sqrt(0.9999) / std::sqrt(0.0001) / 1.25, 0.2);  // 1 - r rounds in float
-    EXPECT_EQ(cr.base.k.b, 0.0f);
+    EXPECT_NEAR(cr.base.k[1], 2.0 * std::sqrt(0.9999) / std::sqrt(0.0001) / 1.25, 0.2);  // 1 - r rounds in float
+    EXPECT_EQ(cr.base.k[2], 0.0f);
 }
 
 }  // namespace

@@ -19,12 +19,12 @@ constexpr TransportMode kRadiance = TransportMode::kRadiance;
 constexpr TransportMode kImportance = TransportMode::kImportance;
 
 // f |cos wi| / pdf: what a sample multiplies the path throughput by.
-Rgb weight(const BsdfSample& s) { return s.f * (std::abs(s.wi.z) / s.pdf); }
+Color weight(const BsdfSample& s) { return s.f * (std::abs(s.wi.z) / s.pdf); }
 
-void expect_rgb_near(const Rgb& a, const Rgb& b, float tol) {
-    EXPECT_NEAR(a.r, b.r, tol);
-    EXPECT_NEAR(a.g, b.g, tol);
-    EXPECT_NEAR(a.b, b.b, tol);
+void expect_rgb_near(const Color& a, const Color& b, float tol) {
+    EXPECT_NEAR(a[0], b[0], tol);
+    EXPECT_NEAR(a[1], b[1], tol);
+    EXPECT_NEAR(a[2], b[2], tol);
 }
 
 // Calls check(case, wo, uc, u) for every lobe case, probe direction and 64 random (uc, u).
@@ -80,7 +80,7 @@ TEST(BsdfLobes, SampleAgreesWithEvalAndPdf) {
             }
             if (s->is_delta) {
                 // The density and value of a delta lobe live in sample() only.
-                EXPECT_EQ(lobe.eval(wo, s->wi, kRadiance), Rgb(0.0f));
+                EXPECT_EQ(lobe.eval(wo, s->wi, kRadiance), Color(0.0f));
                 EXPECT_EQ(lobe.pdf(wo, s->wi), 0.0f);
             } else {
                 EXPECT_EQ(s->f, lobe.eval(wo, s->wi, kRadiance));
@@ -98,14 +98,14 @@ TEST(BsdfLobes, SampleWeightNeverExceedsAlbedo) {
         visit([&](const auto& lobe) {
             auto s = lobe.sample(wo, uc, u, kImportance);
             if (!s) return;
-            Rgb w = weight(*s), a = lobe.albedo();
-            if (holds_alternative<ConductorLobe>(c.lobe)) a = Rgb(1.0f);
+            Color w = weight(*s), a = lobe.albedo();
+            if (holds_alternative<ConductorLobe>(c.lobe)) a = Color(1.0f);
             // A coated lobe's walk multiplies weights of at most 1 (Fresnel, masking, base and
             // medium albedo, transmittance); its roulette raises the weight to at most 1.
-            if (kIsLayered<std::decay_t<decltype(lobe)>>) a = Rgb(1.0f);
-            EXPECT_LE(w.r, a.r * (1.0f + 1e-5f));
-            EXPECT_LE(w.g, a.g * (1.0f + 1e-5f));
-            EXPECT_LE(w.b, a.b * (1.0f + 1e-5f));
+            if (kIsLayered<std::decay_t<decltype(lobe)>>) a = Color(1.0f);
+            EXPECT_LE(w[0], a[0] * (1.0f + 1e-5f));
+            EXPECT_LE(w[1], a[1] * (1.0f + 1e-5f));
+            EXPECT_LE(w[2], a[2] * (1.0f + 1e-5f));
             EXPECT_LE(a.max_component(), 1.0f);
         }, c.lobe);
     });
@@ -153,23 +153,23 @@ TEST(BsdfLobes, NothingScattersFromTheSurfacePlane) {
 // ---- Lambertian
 
 TEST(LambertianLobe, EvalAndPdfAreCosineLawInWosHemisphere) {
-    LambertianLobe lobe{Rgb(0.6f, 0.3f, 0.9f)};
+    LambertianLobe lobe{Color(0.6f, 0.3f, 0.9f)};
     for (float sign : {1.0f, -1.0f}) {
         Vec3f wo = direction(sign * 0.7f, 1.0f);
         Vec3f same = direction(sign * 0.4f, 2.5f), other = direction(-sign * 0.4f, 2.5f);
-        EXPECT_EQ(lobe.eval(wo, same, kRadiance), Rgb(0.6f, 0.3f, 0.9f) * kInvPi);
-        EXPECT_EQ(lobe.eval(wo, other, kRadiance), Rgb(0.0f));
+        EXPECT_EQ(lobe.eval(wo, same, kRadiance), Color(0.6f, 0.3f, 0.9f) * kInvPi);
+        EXPECT_EQ(lobe.eval(wo, other, kRadiance), Color(0.0f));
         EXPECT_FLOAT_EQ(lobe.pdf(wo, same), 0.4f * kInvPi);
         EXPECT_EQ(lobe.pdf(wo, other), 0.0f);
     }
-    EXPECT_EQ(lobe.albedo(), Rgb(0.6f, 0.3f, 0.9f));
+    EXPECT_EQ(lobe.albedo(), Color(0.6f, 0.3f, 0.9f));
     EXPECT_FALSE(lobe.is_delta());
 }
 
 TEST(LambertianLobe, SamplesLandOnWosSideWithWeightAlbedo) {
     // Cosine sampling cancels f |cos| / pdf to the albedo exactly (Nori's diffuse.cpp): the
     // directional albedo estimator has no variance, so each sample must give it.
-    LambertianLobe lobe{Rgb(0.8f, 0.5f, 0.2f)};
+    LambertianLobe lobe{Color(0.8f, 0.5f, 0.2f)};
     Rng rng(3, 4);
     for (const Vec3f& wo : probe_directions()) {
         for (int i = 0; i < 1000; ++i) {
@@ -184,7 +184,7 @@ TEST(LambertianLobe, SamplesLandOnWosSideWithWeightAlbedo) {
 // ---- mirror
 
 TEST(SpecularReflectionLobe, ReflectsMirrorImageWithWeightAlbedo) {
-    SpecularReflectionLobe lobe{Rgb(0.9f, 0.6f, 0.3f)};
+    SpecularReflectionLobe lobe{Color(0.9f, 0.6f, 0.3f)};
     for (const Vec3f& wo : probe_directions()) {
         auto s = lobe.sample(wo, 0.5f, Vec2f(0.5f, 0.5f), kRadiance);
         ASSERT_TRUE(s);
@@ -198,7 +198,7 @@ TEST(SpecularReflectionLobe, ReflectsMirrorImageWithWeightAlbedo) {
 // ---- dielectric
 
 TEST(FresnelSpecularLobe, ReflectionAndRefractionWeightsSumToTintAtEveryAngle) {
-    const Rgb tint(1.0f, 0.9f, 0.8f);
+    const Color tint(1.0f, 0.9f, 0.8f);
     for (bool schlick : {false, true}) {
         for (float eta : {1.5f, 1.0f / 1.33f}) {
             FresnelSpecularLobe lobe{tint, eta, schlick};
@@ -228,7 +228,7 @@ TEST(FresnelSpecularLobe, ReflectionAndRefractionWeightsSumToTintAtEveryAngle) {
                 EXPECT_FLOAT_EQ(last->eta, eta_rel);
                 // With the radiance factor 1 / eta'^2 removed, F + (1 - F) = 1: the expected
                 // weight is the tint.
-                Rgb transmitted = weight(*last) * (eta_rel * eta_rel);
+                Color transmitted = weight(*last) * (eta_rel * eta_rel);
                 expect_rgb_near(transmitted, tint, 1e-4f);
                 expect_rgb_near(weight(*first) * first->pdf + transmitted * last->pdf, tint, 1e-4f);
             }
@@ -237,7 +237,7 @@ TEST(FresnelSpecularLobe, ReflectionAndRefractionWeightsSumToTintAtEveryAngle) {
 }
 
 TEST(FresnelSpecularLobe, ChoosesReflectionWithProbabilityF) {
-    FresnelSpecularLobe lobe{Rgb(1.0f), 1.5f, false};
+    FresnelSpecularLobe lobe{Color(1.0f), 1.5f, false};
     Vec3f wo = direction(0.3f, 0.0f);
     float f = fresnel_dielectric(0.3f, 1.5f);
     EXPECT_EQ(lobe.reflectance(wo), f);
@@ -248,17 +248,17 @@ TEST(FresnelSpecularLobe, ChoosesReflectionWithProbabilityF) {
 TEST(FresnelSpecularLobe, RefractsBySnellsLawWithTheRadianceFactor) {
     // Normal incidence on glass: 4% reflected; the transmitted 96% of radiance is compressed into
     // a solid angle 1.5^2 times smaller on the way in, and expands on the way out.
-    FresnelSpecularLobe lobe{Rgb(1.0f), 1.5f, false};
+    FresnelSpecularLobe lobe{Color(1.0f), 1.5f, false};
     auto in = lobe.sample(Vec3f(0, 0, 1), 0.5f, Vec2f(), kRadiance);
     ASSERT_TRUE(in && in->is_transmission);
     EXPECT_NEAR(in->wi.z, -1.0f, 1e-6f);
-    expect_rgb_near(weight(*in), Rgb(1.0f / 2.25f), 1e-6f);
+    expect_rgb_near(weight(*in), Color(1.0f / 2.25f), 1e-6f);
     auto in_importance = lobe.sample(Vec3f(0, 0, 1), 0.5f, Vec2f(), kImportance);
-    expect_rgb_near(weight(*in_importance), Rgb(1.0f), 1e-6f);
+    expect_rgb_near(weight(*in_importance), Color(1.0f), 1e-6f);
     auto out = lobe.sample(Vec3f(0, 0, -1), 0.5f, Vec2f(), kRadiance);
     ASSERT_TRUE(out && out->is_transmission);
     EXPECT_FLOAT_EQ(out->eta, 1.0f / 1.5f);
-    expect_rgb_near(weight(*out), Rgb(2.25f), 1e-5f);
+    expect_rgb_near(weight(*out), Color(2.25f), 1e-5f);
     // Oblique: n_i sin(theta_i) = n_t sin(theta_t).
     Vec3f wo = direction(0.5f, 1.0f);
     auto t = lobe.sample(wo, kOneMinusEpsilon, Vec2f(), kRadiance);
@@ -272,7 +272,7 @@ TEST(FresnelSpecularLobe, SchlickFollowsSmallpt) {
     // entering, the refracted one leaving), Re = R0 + (1 - R0) c^5; total internal reflection
     // reflects everything.
     const double n = 1.5;
-    FresnelSpecularLobe lobe{Rgb(1.0f), 1.5f, true};
+    FresnelSpecularLobe lobe{Color(1.0f), 1.5f, true};
     for (int i = -99; i <= 99; ++i) {
         if (i == 0) continue;
         double cos_o = i / 100.0;
@@ -297,7 +297,7 @@ TEST(FresnelSpecularLobe, SchlickFollowsSmallpt) {
 // ---- transmission
 
 TEST(SpecularTransmissionLobe, WeightIsOneMinusFresnelAndBlackUnderTotalInternalReflection) {
-    const Rgb tint(0.7f, 0.8f, 0.9f);
+    const Color tint(0.7f, 0.8f, 0.9f);
     SpecularTransmissionLobe lobe{tint, 1.5f};
     for (int i = -999; i <= 999; ++i) {
         if (i == 0) continue;

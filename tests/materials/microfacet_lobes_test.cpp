@@ -33,7 +33,7 @@ std::vector<Vec3f> random_directions(uint64_t seed, int n) {
 }
 
 // |a - b| <= tol max(|a|, |b|), channel by channel.
-void expect_relative_near(const Rgb& a, const Rgb& b, float tol) {
+void expect_relative_near(const Color& a, const Color& b, float tol) {
     for (int i = 0; i < 3; ++i)
         EXPECT_NEAR(a[i], b[i], tol * std::max(std::abs(a[i]), std::abs(b[i])) + 1e-12f) << "channel " << i;
 }
@@ -49,15 +49,15 @@ TEST(ConductorLobe, EvalIsTorranceSparrowWithComplexFresnel) {
         const TrowbridgeReitz& tr = lobe.distribution;
         for (const Vec3f& wo : random_directions(1, 20)) {
             for (const Vec3f& wi : random_directions(2, 20)) {
-                Rgb f = lobe.eval(wo, wi, kRadiance);
+                Color f = lobe.eval(wo, wi, kRadiance);
                 if (!same_hemisphere(wo, wi)) {
-                    EXPECT_EQ(f, Rgb(0.0f));
+                    EXPECT_EQ(f, Color(0.0f));
                     EXPECT_EQ(lobe.pdf(wo, wi), 0.0f);
                     continue;
                 }
                 Vec3f wh = normalize(wo + wi);
                 if (wh.z < 0.0f) wh = -wh;
-                Rgb expected = fresnel_complex(abs_dot(wo, wh), kGoldEta, kGoldK) *
+                Color expected = fresnel_complex(abs_dot(wo, wh), kGoldEta, kGoldK) *
                                (tr.d(wh) * tr.g(wo, wi) / (4.0f * std::abs(wo.z * wi.z)));
                 expect_relative_near(f, expected, 1e-5f);
                 // The visible-normal density through the reflection Jacobian.
@@ -94,7 +94,7 @@ TEST(ConductorLobe, SmoothIsTheFresnelWeightedMirror) {
         EXPECT_EQ(s->pdf, 1.0f);
         expect_relative_near(s->f * std::abs(s->wi.z),
                              fresnel_complex(std::abs(wo.z), kGoldEta, kGoldK), 1e-6f);
-        EXPECT_EQ(lobe.eval(wo, s->wi, kRadiance), Rgb(0.0f));
+        EXPECT_EQ(lobe.eval(wo, s->wi, kRadiance), Color(0.0f));
     }
     // The albedo view shows the colour at normal incidence.
     EXPECT_EQ(lobe.albedo(), fresnel_complex(1.0f, kGoldEta, kGoldK));
@@ -115,7 +115,7 @@ TEST(ConductorLobe, QuadratureOverNormalsAgreesWithQuadratureOverDirections) {
             auto integrand = [&](double phi, double ct) {
                 double st = std::sqrt(std::max(0.0, 1.0 - ct * ct));
                 Vec3f wi(Vec3d(st * std::cos(phi), st * std::sin(phi), ct));
-                return double(lobe.eval(wo, wi, kRadiance).r) * std::abs(ct);
+                return double(lobe.eval(wo, wi, kRadiance)[0]) * std::abs(ct);
             };
             double by_directions = integrate_2d(integrand, -kPiD, kPiD, c > 0 ? 0.0 : -1.0,
                                                 c > 0 ? 1.0 : 0.0, 1e-6);
@@ -151,9 +151,9 @@ TEST(ConductorLobe, SingleScatteringLosesEnergyAsRoughnessGrows) {
 // ---- rough dielectric
 
 const std::vector<DielectricLobe> kRoughGlasses = {
-    DielectricLobe{Rgb(1.0f), 1.5f, TrowbridgeReitz(0.3f)},
-    DielectricLobe{Rgb(1.0f), 1.0f / 1.5f, TrowbridgeReitz(0.1f)},
-    DielectricLobe{Rgb(1.0f), 1.33f, TrowbridgeReitz(0.05f, 0.4f)}};
+    DielectricLobe{Color(1.0f), 1.5f, TrowbridgeReitz(0.3f)},
+    DielectricLobe{Color(1.0f), 1.0f / 1.5f, TrowbridgeReitz(0.1f)},
+    DielectricLobe{Color(1.0f), 1.33f, TrowbridgeReitz(0.05f, 0.4f)}};
 
 TEST(DielectricLobe, ReflectionIsReciprocal) {
     for (const DielectricLobe& lobe : kRoughGlasses) {
@@ -179,7 +179,7 @@ TEST(DielectricLobe, TransmissionObeysTheGeneralizedReciprocity) {
                 float n_o = wo.z > 0.0f ? 1.0f : lobe.eta, n_i = wi.z > 0.0f ? 1.0f : lobe.eta;
                 Vec3f wm = normalize(wo * n_o + wi * n_i);
                 float tol = 2e-5f + 2e-7f / std::min(abs_dot(wo, wm), abs_dot(wi, wm));
-                Rgb forward = lobe.eval(wo, wi, kRadiance), backward = lobe.eval(wi, wo, kRadiance);
+                Color forward = lobe.eval(wo, wi, kRadiance), backward = lobe.eval(wi, wo, kRadiance);
                 expect_relative_near(forward / (n_o * n_o), backward / (n_i * n_i), tol);
                 expect_relative_near(lobe.eval(wo, wi, kImportance), backward, tol);
             }
@@ -209,7 +209,7 @@ TEST(DielectricLobe, RoughReflectionPlusTransmissionIsAtMostOne) {
 TEST(DielectricLobe, SmoothIsFresnelSpecularWithExactFresnel) {
     // R + T = 1: the two choices' weights (in importance mode) are F / F and (1 - F) / (1 - F)
     // times the tint; the samples are those of FresnelSpecularLobe without Schlick.
-    const Rgb tint(1.0f, 0.9f, 0.8f);
+    const Color tint(1.0f, 0.9f, 0.8f);
     for (float eta : {1.5f, 1.0f / 1.5f}) {
         DielectricLobe lobe{tint, eta, TrowbridgeReitz(0.0f)};
         FresnelSpecularLobe reference{tint, eta, false};
@@ -228,7 +228,7 @@ TEST(DielectricLobe, SmoothIsFresnelSpecularWithExactFresnel) {
         }
     }
     // eta = 1 is no interface at all: everything passes straight through, as a delta.
-    DielectricLobe air{Rgb(1.0f), 1.0f, TrowbridgeReitz(0.3f)};
+    DielectricLobe air{Color(1.0f), 1.0f, TrowbridgeReitz(0.3f)};
     EXPECT_TRUE(air.is_delta());
     auto s = air.sample(direction(0.6f, 1.0f), 0.0f, Vec2f(0.5f, 0.5f), kRadiance);
     ASSERT_TRUE(s);
@@ -257,8 +257,8 @@ TEST(ThinDielectricLobe, ReflectsTheInterReflectedFresnelSumAndTransmitsStraight
             EXPECT_TRUE(transmitted->is_transmission);
             EXPECT_EQ(transmitted->eta, 1.0f);
             // Each choice weighs 1, so R' + T' = 1 whatever the transport mode.
-            EXPECT_NEAR(reflected->f.r * std::abs(wo.z) / reflected->pdf, 1.0f, 1e-5f);
-            EXPECT_NEAR(transmitted->f.r * std::abs(wo.z) / transmitted->pdf, 1.0f, 1e-5f);
+            EXPECT_NEAR(reflected->f[0] * std::abs(wo.z) / reflected->pdf, 1.0f, 1e-5f);
+            EXPECT_NEAR(transmitted->f[0] * std::abs(wo.z) / transmitted->pdf, 1.0f, 1e-5f);
             EXPECT_NEAR(reflected->pdf + transmitted->pdf, 1.0f, 1e-6f);
         }
     }

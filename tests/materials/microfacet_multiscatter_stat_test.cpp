@@ -44,7 +44,7 @@ ConductorLobe gold(float ax, float ay) {
     return ConductorLobe{TrowbridgeReitz(ax, ay), kGoldEta, kGoldK}.with_multiscatter();
 }
 DielectricLobe glass(float alpha, float eta) {
-    return DielectricLobe{Rgb(1.0f), eta, TrowbridgeReitz(alpha)}.with_multiscatter();
+    return DielectricLobe{Color(1.0f), eta, TrowbridgeReitz(alpha)}.with_multiscatter();
 }
 
 TEST(MultiscatterChi2, ConductorAlphaPoint1) { expect_sampling_fits_pdf(gold(0.1f, 0.1f), direction(0.7f, 0.3f)); }
@@ -65,7 +65,7 @@ TEST(MultiscatterChi2, DielectricBelowOne) {
 }
 TEST(MultiscatterChi2, DielectricAlpha1Grazing) { expect_sampling_fits_pdf(glass(1.0f, 1.5f), direction(0.1f, 0.5f)); }
 TEST(MultiscatterChi2, DielectricAnisotropic) {
-    expect_sampling_fits_pdf(DielectricLobe{Rgb(1.0f), 1.5f, TrowbridgeReitz(0.05f, 0.4f)}.with_multiscatter(),
+    expect_sampling_fits_pdf(DielectricLobe{Color(1.0f), 1.5f, TrowbridgeReitz(0.05f, 0.4f)}.with_multiscatter(),
                              direction(0.5f, 0.8f));
 }
 
@@ -80,7 +80,7 @@ std::pair<double, double> mean_weight(const Lobe& lobe, Vec3f wo, TransportMode 
     for (int i = 0; i < n; ++i) {
         float uc = rng.next_float();
         auto s = lobe.sample(wo, uc, rng.next_vec2f(), mode);
-        double w = s ? double(s->f.r) * double(std::abs(s->wi.z)) / double(s->pdf) : 0.0;
+        double w = s ? double(s->f[0]) * double(std::abs(s->wi.z)) / double(s->pdf) : 0.0;
         sum += w;
         sum_sq += w * w;
     }
@@ -92,7 +92,7 @@ TEST(MultiscatterFurnace, SampleWeightsOfWhiteLobesAverageToOne) {
     // Within 5 standard errors plus the tables' 0.5 % (microfacet_multiscatter_test.cpp measures
     // that part deterministically).
     for (float alpha : {0.1f, 0.5f, 1.0f}) {
-        ConductorLobe metal = ConductorLobe{TrowbridgeReitz(alpha), Rgb(1.0f), Rgb(2e4f)}.with_multiscatter();
+        ConductorLobe metal = ConductorLobe{TrowbridgeReitz(alpha), Color(1.0f), Color(2e4f)}.with_multiscatter();
         DielectricLobe dielectric = glass(alpha, 1.5f);
         for (float c : {0.9f, 0.5f, -0.3f}) {
             auto [m, se] = mean_weight(metal, direction(c, 0.4f), kRadiance);

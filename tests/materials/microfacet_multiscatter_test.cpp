@@ -19,9 +19,9 @@ constexpr TransportMode kImportance = TransportMode::kImportance;
 constexpr TransportMode kRadiance = TransportMode::kRadiance;
 
 // A conductor that reflects everything: F = 1 - 4 eta / ((eta + 1)^2 + k^2) = 1 - 1e-8.
-ConductorLobe white_conductor(float alpha) { return ConductorLobe{TrowbridgeReitz(alpha), Rgb(1.0f), Rgb(2e4f)}; }
+ConductorLobe white_conductor(float alpha) { return ConductorLobe{TrowbridgeReitz(alpha), Color(1.0f), Color(2e4f)}; }
 
-DielectricLobe glass(float alpha, float eta) { return DielectricLobe{Rgb(1.0f), eta, TrowbridgeReitz(alpha)}; }
+DielectricLobe glass(float alpha, float eta) { return DielectricLobe{Color(1.0f), eta, TrowbridgeReitz(alpha)}; }
 
 // D(m) of an isotropic distribution, in double (the slope-space form, Heitz 2014 eqs. 8, 10).
 double ggx_d(double alpha, Vec3d m) {
@@ -38,8 +38,8 @@ double ggx_d(double alpha, Vec3d m) {
 // out: the integrand is then f / D times bounded factors. Adaptive Simpson to about eps,
 // independent of the tables' generator (which integrates G / G1 over the visible normals).
 // The single-scattering f of either lobe (the conductor's does not depend on the transport mode).
-Rgb single_f(const ConductorLobe& lobe, Vec3f wo, Vec3f wi, TransportMode) { return lobe.evaluate_single(wo, wi).f; }
-Rgb single_f(const DielectricLobe& lobe, Vec3f wo, Vec3f wi, TransportMode mode) {
+Color single_f(const ConductorLobe& lobe, Vec3f wo, Vec3f wi, TransportMode) { return lobe.evaluate_single(wo, wi).f; }
+Color single_f(const DielectricLobe& lobe, Vec3f wo, Vec3f wi, TransportMode mode) {
     return lobe.evaluate_single(wo, wi, mode).f;
 }
 
@@ -58,7 +58,7 @@ double single_scatter_albedo(const Lobe& lobe, Vec3f wo, TransportMode mode, dou
         Vec3f wr = reflect(wo, wm);
         double sum = 0.0;
         if (wr.z * wo.z > 0.0f) {
-            sum += double(single_f(lobe, wo, wr, mode).r) * std::abs(double(wr.z)) * 4.0 * std::abs(wo_dot_m);
+            sum += double(single_f(lobe, wo, wr, mode)[0]) * std::abs(double(wr.z)) * 4.0 * std::abs(wo_dot_m);
         }
         if constexpr (std::is_same_v<Lobe, DielectricLobe>) {
             Vec3f wt;
@@ -66,7 +66,7 @@ double single_scatter_albedo(const Lobe& lobe, Vec3f wo, TransportMode mode, dou
             if (refract(wo, wm, lobe.eta, &wt, &eta_rel) && wt.z * wo.z < 0.0f) {
                 double wt_dot_m = double(dot(wt, wm));
                 double jacobian = sqr(wt_dot_m + wo_dot_m / double(eta_rel)) / std::abs(wt_dot_m);
-                sum += double(single_f(lobe, wo, wt, mode).r) * std::abs(double(wt.z)) * jacobian;
+                sum += double(single_f(lobe, wo, wt, mode)[0]) * std::abs(double(wt.z)) * jacobian;
             }
         }
         return sum / density;
@@ -95,7 +95,7 @@ double compensation_albedo(const Lobe& lobe, Vec3f wo, TransportMode mode) {
     auto on_side = [&](double side) {
         auto g = [&](double mu) {
             Vec3f wi = direction(float(side * mu), 1.1f);
-            double added = double(lobe.eval(wo, wi, mode).r) - double(single_f(lobe, wo, wi, mode).r);
+            double added = double(lobe.eval(wo, wi, mode)[0]) - double(single_f(lobe, wo, wi, mode)[0]);
             return added * mu;
         };
         double sum = 0.0;
@@ -143,10 +143,10 @@ TEST(ConductorMultiscatter, ColouredMetalGainsItsFresnelWeightedShare) {
     // the table, F_avg by its own quadrature.
     ConductorLobe lobe = ConductorLobe{TrowbridgeReitz(0.6f), kGoldEta, kGoldK}.with_multiscatter();
     double f_avg = 2.0 * detail::integrate_1d(
-                             [&](double mu) { return double(fresnel_complex(float(mu), kGoldEta.r, kGoldK.r)) * mu; },
+                             [&](double mu) { return double(fresnel_complex(float(mu), kGoldEta[0], kGoldK[0])) * mu; },
                              0.0, 1.0, 1e-9);
-    EXPECT_NEAR(lobe.fresnel_avg.r, f_avg, 1e-5);
-    f_avg = lobe.fresnel_avg.r;
+    EXPECT_NEAR(lobe.fresnel_avg[0], f_avg, 1e-5);
+    f_avg = lobe.fresnel_avg[0];
     AlbedoCurve e = conductor_albedo(0.6f);
     double e_avg = e.average;
     for (float c : {0.9f, 0.4f}) {
@@ -185,9 +185,9 @@ TEST(Multiscatter, LobesStayReciprocal) {
     for (const Vec3f& wo : probe_directions()) {
         for (const Vec3f& wi : probe_directions()) {
             if (std::abs(wo.z) < 0.01f || std::abs(wi.z) < 0.01f) continue;
-            Rgb a = metal.eval(wo, wi, kRadiance), b = metal.eval(wi, wo, kRadiance);
-            EXPECT_NEAR(a.g, b.g, 1e-4f * (1.0f + a.g)) << wo.z << " " << wi.z;
-            double fo = dielectric.eval(wo, wi, kImportance).r, fi = dielectric.eval(wi, wo, kImportance).r;
+            Color a = metal.eval(wo, wi, kRadiance), b = metal.eval(wi, wo, kRadiance);
+            EXPECT_NEAR(a[1], b[1], 1e-4f * (1.0f + a[1])) << wo.z << " " << wi.z;
+            double fo = dielectric.eval(wo, wi, kImportance)[0], fi = dielectric.eval(wi, wo, kImportance)[0];
             EXPECT_NEAR(sqr(n(wo)) * fo, sqr(n(wi)) * fi, 1e-4 * (1.0 + sqr(n(wo)) * fo)) << wo.z << " " << wi.z;
         }
     }

@@ -82,14 +82,14 @@ double albedo_by_quadrature(const Lobe& lobe, Vec3f wo, TransportMode mode, doub
         double sum = 0.0;
         Vec3f wi = reflect(wo, wm);
         if (same_hemisphere(wo, wi))
-            sum += double(lobe.eval(wo, wi, mode).r) * double(std::abs(wi.z)) * 4.0 * std::abs(wo_dot_wm);
+            sum += double(lobe.eval(wo, wi, mode)[0]) * double(std::abs(wi.z)) * 4.0 * std::abs(wo_dot_wm);
         if constexpr (std::is_same_v<Lobe, DielectricLobe>) {
             Vec3f wt;
             float eta_rel = 1.0f;
             if (refract(wo, wm, lobe.eta, &wt, &eta_rel) && wt.z * wo.z < 0.0f) {
                 double wt_dot_wm = double(dot(wt, wm));
                 double jacobian = sqr(wt_dot_wm + wo_dot_wm / double(eta_rel)) / std::abs(wt_dot_wm);
-                sum += double(lobe.eval(wo, wt, mode).r) * double(std::abs(wt.z)) * jacobian;
+                sum += double(lobe.eval(wo, wt, mode)[0]) * double(std::abs(wt.z)) * jacobian;
             }
         }
         return sum / density * 2.0 * s;

@@ -77,7 +77,7 @@ TEST(DeltaLightIntegrators, DirectionalPowerBecomesIrradianceOverTheScenesDisk) 
     for (int i = 0; i < kChoices; ++i) {
         std::optional<LightSample> ls = lights.sample({0.0f, 0.0f, 0.0f}, (float(i) + 0.5f) / kChoices, {0.5f, 0.5f});
         ASSERT_TRUE(ls);
-        if (std::abs(ls->Le.g - by_power) < 1e-5f * by_power) ++first;
+        if (std::abs(ls->Le[1] - by_power) < 1e-5f * by_power) ++first;
         if (ls->Le == Color(2.0f)) ++second;
     }
     EXPECT_EQ(first + second, kChoices);

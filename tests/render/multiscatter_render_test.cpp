@@ -28,10 +28,10 @@ RoughnessParams roughness(float alpha) { return RoughnessParams{FloatParam{alpha
 
 // A conductor that reflects everything (F = 1 - 1e-8) of roughness alpha.
 LobeParams white_metal(float alpha, bool multiscatter) {
-    return ConductorParams{ColorParam{Color(1.0f)}, ColorParam{Color(2e4f)}, roughness(alpha), multiscatter};
+    return ConductorParams{ColorParam{Rgb(1.0f)}, ColorParam{Rgb(2e4f)}, roughness(alpha), multiscatter};
 }
 LobeParams clear_glass(float alpha, bool multiscatter) {
-    return RoughDielectricParams{1.5f, ColorParam{Color(1.0f)}, roughness(alpha), multiscatter};
+    return RoughDielectricParams{1.5f, ColorParam{Rgb(1.0f)}, roughness(alpha), multiscatter};
 }
 
 Scene furnace(const Case& c, bool multiscatter) {

@@ -34,7 +34,7 @@ struct PlaneHit {
 Material normal_mapped(Vec3f c, NormalMapConvention convention = NormalMapConvention::kOpenGl) {
     Material m = make_diffuse(Rgb(0.5f));
     SurfaceParams s;
-    s.normal_map = ColorParam{Color(c.x, c.y, c.z)};
+    s.normal_map = ColorParam{Rgb(c.x, c.y, c.z)};
     s.normal_map_convention = convention;
     set_surface(m, s);
     return m;
@@ -142,7 +142,7 @@ TEST(ShadingFrame, NormalMapImageTiltsTheNormal) {
     t.image = textures.add_image(one_texel(encode(Vec3f(std::sin(a), 0.0f, std::cos(a)))));
     Material m = make_diffuse(Rgb(0.5f));
     SurfaceParams s;
-    s.normal_map = ColorParam{Color(1.0f), textures.add(t), 0.0f, 1.0f};
+    s.normal_map = ColorParam{Rgb(1.0f), textures.add(t), 0.0f, 1.0f};
     set_surface(m, s);
     PlaneHit p;
     expect_near(shading_frame(m, textures, p.g, p.hit).n, Vec3f(std::sin(a), 0, std::cos(a)), 1e-6f);

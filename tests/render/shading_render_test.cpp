@@ -27,7 +27,7 @@ float brightest(const Image& image) {
 }
 
 // The colour of tangent-space normal n.
-Color encode(Vec3f n) { return Color(0.5f * n.x + 0.5f, 0.5f * n.y + 0.5f, 0.5f * n.z + 0.5f); }
+Rgb encode(Vec3f n) { return Rgb(0.5f * n.x + 0.5f, 0.5f * n.y + 0.5f, 0.5f * n.z + 0.5f); }
 
 // Gives every material of the scene a constant normal map of tangent-space normal n.
 void map_every_normal(Scene& scene, Vec3f n) {

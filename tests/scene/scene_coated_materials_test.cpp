@@ -95,7 +95,7 @@ TEST(SceneCoatedMaterials, CoatedConductorKeysAreRead) {
     EXPECT_EQ(coated_conductor(R"("conductor_eta": 1)").base.k, Rgb(3.637741f, 2.577065f, 2.393857f) / 1.5f);
     CoatedConductorLobe artist = coated_conductor(R"("reflectance": [0.64, 0.64, 0.64])");
     EXPECT_EQ(artist.base.eta, Rgb(1.0f / 1.5f));
-    EXPECT_NEAR(artist.base.k.r, 2.0f * 0.8f / 0.6f / 1.5f, 1e-5f);
+    EXPECT_NEAR(artist.base.k[0], 2.0f * 0.8f / 0.6f / 1.5f, 1e-5f);
     CoatedConductorLobe medium = coated_conductor(R"("thickness": 0.5, "medium_albedo": 0.8, "g": 0.5, "maxdepth": 20, "nsamples": 2)");
     EXPECT_EQ(medium.thickness, 0.5f);
     EXPECT_EQ(medium.medium_albedo, Rgb(0.8f));

@@ -75,13 +75,13 @@ TEST(SceneMaterials, ConductorReflectanceIsPbrtsArtistFriendlyForm) {
         load_material(R"({"type": "conductor", "reflectance": [0.9, 0.5, 0.0], "roughness": 0.3})"));
     EXPECT_EQ(c.eta, Color(1.0f));
     Color f0 = fresnel_complex(1.0f, c.eta, c.k);
-    EXPECT_NEAR(f0.r, 0.9f, 1e-5f);
-    EXPECT_NEAR(f0.g, 0.5f, 1e-5f);
-    EXPECT_EQ(f0.b, 0.0f);
+    EXPECT_NEAR(f0[0], 0.9f, 1e-5f);
+    EXPECT_NEAR(f0[1], 0.5f, 1e-5f);
+    EXPECT_EQ(f0[2], 0.0f);
     // A reflectance of 1 is clamped to 0.9999 (pbrt-v4), so that k stays finite.
     const auto one = only_lobe<ConductorLobe>(load_material(R"({"type": "conductor", "reflectance": 1})"));
-    EXPECT_TRUE(std::isfinite(one.k.r));
-    EXPECT_NEAR(fresnel_complex(1.0f, one.eta, one.k).r, 0.9999f, 1e-5f);
+    EXPECT_TRUE(std::isfinite(one.k[0]));
+    EXPECT_NEAR(fresnel_complex(1.0f, one.eta, one.k)[0], 0.9999f, 1e-5f);
     EXPECT_EQ(material_error(R"({"type": "conductor", "reflectance": 1.2})").message(),
               "expected a number in [0, 1], got 1.2");
 }

@@ -39,14 +39,14 @@ TEST(SceneMetals, MetalsReflectTheDocumentedColours) {
     const auto gold = only_lobe<ConductorLobe>(load_material(R"({"type": "conductor", "metal": "Au"})"));
     EXPECT_TRUE(gold.is_delta());  // no roughness: the smooth metal
     const Color f_gold = fresnel_complex(1.0f, gold.eta, gold.k);
-    EXPECT_NEAR(f_gold.r, 0.997f, 5e-4f);
-    EXPECT_NEAR(f_gold.g, 0.783f, 5e-4f);
-    EXPECT_NEAR(f_gold.b, 0.343f, 5e-4f);
+    EXPECT_NEAR(f_gold[0], 0.997f, 5e-4f);
+    EXPECT_NEAR(f_gold[1], 0.783f, 5e-4f);
+    EXPECT_NEAR(f_gold[2], 0.343f, 5e-4f);
     const auto iron = only_lobe<ConductorLobe>(load_material(R"({"type": "conductor", "metal": "Fe"})"));
     const Color f_iron = fresnel_complex(1.0f, iron.eta, iron.k);
-    EXPECT_NEAR(f_iron.r, 0.530f, 5e-4f);
-    EXPECT_NEAR(f_iron.g, 0.513f, 5e-4f);
-    EXPECT_NEAR(f_iron.b, 0.494f, 5e-4f);
+    EXPECT_NEAR(f_iron[0], 0.530f, 5e-4f);
+    EXPECT_NEAR(f_iron[1], 0.513f, 5e-4f);
+    EXPECT_NEAR(f_iron[2], 0.494f, 5e-4f);
 }
 
 TEST(SceneMetals, UnknownMetalListsTheKnownOnes) {
@@ -76,7 +76,7 @@ TEST(SceneMultiscatter, OffByDefaultOnWhenAsked) {
         EXPECT_FALSE(off_too.multiscatter) << conductor;
         const auto on = only_lobe<ConductorLobe>(load_material(base + R"(, "multiscatter": true})"));
         EXPECT_TRUE(on.multiscatter) << conductor;
-        EXPECT_GT(on.fresnel_avg.g, 0.0f) << conductor;
+        EXPECT_GT(on.fresnel_avg[1], 0.0f) << conductor;
     }
     const auto glass = only_lobe<DielectricLobe>(
         load_material(R"({"type": "dielectric", "roughness": 0.3, "multiscatter": true})"));

@@ -9,7 +9,7 @@
 #include "candela/lights/mesh_emitter.h"
 #include "candela/lights/sphere_emitter.h"
 #include "candela/math/constants.h"
-#include "candela/math/rgb.h"
+#include "candela/math/color.h"
 
 namespace candela {
 
@@ -29,22 +29,22 @@ CANDELA_HD decltype(auto) visit_emitter(const Emitter& emitter, F&& f) {
 
 struct AreaLight {
     Emitter emitter;
-    Rgb emission;
+    Color emission;
     bool two_sided = false;
     uint32_t shape_id = 0;  // in the scene's shapes
 };
 
 // Radiance leaving a point with front normal n in direction w (away from the surface; need not
 // be unit): emission on the front side, or on both when two-sided, else black.
-CANDELA_HD inline Rgb area_light_radiance(const AreaLight& light, const Vec3f& n, const Vec3f& w) {
-    return light.two_sided || dot(n, w) > 0.0f ? light.emission : Rgb();
+CANDELA_HD inline Color area_light_radiance(const AreaLight& light, const Vec3f& n, const Vec3f& w) {
+    return light.two_sided || dot(n, w) > 0.0f ? light.emission : Color();
 }
 
 // Total emitted power as luminance: a Lambertian emitter sends pi L per unit area from each
 // emitting side.
 CANDELA_HD inline float area_light_power(const AreaLight& light) {
     float area = visit([](const auto& e) { return e.area(); }, light.emitter);
-    return kPi * area * light.emission.luminance() * (light.two_sided ? 2.0f : 1.0f);
+    return kPi * area * to_rgb(light.emission).luminance() * (light.two_sided ? 2.0f : 1.0f);
 }
 
 }  // namespace candela

@@ -25,7 +25,7 @@ struct DirectionalLight {
         return s;
     }
     CANDELA_HD float power(float scene_radius) const {
-        return power_per_irradiance(scene_radius) * irradiance.luminance();
+        return power_per_irradiance(scene_radius) * to_rgb(irradiance).luminance();
     }
 };
 static_assert(DeltaLightType<DirectionalLight>);

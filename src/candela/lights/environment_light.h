@@ -11,7 +11,7 @@
 #include <optional>
 
 #include "candela/image/image.h"
-#include "candela/math/rgb.h"
+#include "candela/math/color.h"
 #include "candela/math/transform.h"
 #include "candela/math/vec.h"
 #include "candela/sampling/distribution_2d.h"

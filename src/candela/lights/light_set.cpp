@@ -33,7 +33,7 @@ LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere>
     for (size_t id = 0; id < shapes.size(); ++id) {
         const Shape& shape = shapes[id];
         if (shape.emission.is_black()) continue;
-        AreaLight light{make_emitter(shape, meshes, spheres, disks), shape.emission, shape.two_sided,
+        AreaLight light{make_emitter(shape, meshes, spheres, disks), from_rgb(shape.emission), shape.two_sided,
                         static_cast<uint32_t>(id)};
         float area = visit([](const auto& e) { return e.area(); }, light.emitter);
         if (!(area > 0.0f) || !std::isfinite(area)) continue;
@@ -60,8 +60,8 @@ LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere>
     for (size_t i = 0; i < weights.size(); ++i) selection_probability_.push_back(selection_.probability(i));
 }
 
-Rgb LightSet::environment_radiance(const Vec3f& w) const {
-    return environment_ ? environment_->radiance(w) : Rgb(0.0f);
+Color LightSet::environment_radiance(const Vec3f& w) const {
+    return environment_ ? from_rgb(environment_->radiance(w)) : Color(0.0f);
 }
 
 float LightSet::environment_pdf(const Vec3f& w) const {
@@ -84,7 +84,7 @@ CANDELA_HD std::optional<LightSample> LightSet::sample(const Vec3f& ref, float u
         if (!es) return result;
         float pdf = probability * es->pdf;
         if (!(pdf > 0.0f) || !std::isfinite(pdf)) return result;
-        result.emplace(LightSample{ref + es->wi, -es->wi, es->wi, true, false, es->Le, pdf});
+        result.emplace(LightSample{ref + es->wi, -es->wi, es->wi, true, false, from_rgb(es->Le), pdf});
         return result;
     }
     const AreaLight& light = lights_[chosen];
@@ -119,9 +119,9 @@ CANDELA_HD float LightSet::pdf(const Vec3f& ref, uint32_t shape_id, const Vec3f&
     return selection_probability_[li] * emitter_pdf;
 }
 
-CANDELA_HD Rgb LightSet::emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w) const {
+CANDELA_HD Color LightSet::emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w) const {
     uint32_t li = light_index(shape_id);
-    return li == kNoLight ? Rgb() : area_light_radiance(lights_[li], n, w);
+    return li == kNoLight ? Color() : area_light_radiance(lights_[li], n, w);
 }
 
 CANDELA_HD float LightSet::selection_probability(uint32_t shape_id) const {

@@ -60,7 +60,7 @@ class LightSet {
     CANDELA_HD bool uses_choice() const { return size() > 1; }
 
     // Radiance arriving from world direction w (unit) from the environment; black without one.
-    Rgb environment_radiance(const Vec3f& w) const;
+    Color environment_radiance(const Vec3f& w) const;
     // The pdf per solid angle (selection included) with which sample() produces direction w
     // towards the environment; 0 without one.
     float environment_pdf(const Vec3f& w) const;
@@ -78,7 +78,7 @@ class LightSet {
 
     // Radiance leaving a point of shape `shape_id` with front normal n in direction w (unit,
     // pointing away from the surface); black for non-emitters and from behind one-sided ones.
-    CANDELA_HD Rgb emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w) const;
+    CANDELA_HD Color emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w) const;
 
     // The probability that sample() picks the light of shape `shape_id`; 0 if it is not a light.
     CANDELA_HD float selection_probability(uint32_t shape_id) const;

@@ -27,7 +27,7 @@ struct PointLight {
         s.emplace(DeltaLightSample{position, d * (1.0f / std::sqrt(dist2)), intensity / dist2, false});
         return s;
     }
-    CANDELA_HD float power(float /*scene_radius*/) const { return power_per_intensity() * intensity.luminance(); }
+    CANDELA_HD float power(float /*scene_radius*/) const { return power_per_intensity() * to_rgb(intensity).luminance(); }
 };
 static_assert(DeltaLightType<PointLight>);
 

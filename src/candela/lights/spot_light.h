@@ -52,7 +52,7 @@ struct SpotLight {
         return s;
     }
     CANDELA_HD float power(float /*scene_radius*/) const {
-        return power_per_intensity(cos_falloff_start, cos_falloff_end) * intensity.luminance();
+        return power_per_intensity(cos_falloff_start, cos_falloff_end) * to_rgb(intensity).luminance();
     }
 };
 static_assert(DeltaLightType<SpotLight>);

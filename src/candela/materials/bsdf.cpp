@@ -9,8 +9,8 @@
 
 namespace candela {
 
-CANDELA_HD Rgb Bsdf::eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
-    Rgb f(0.0f);
+CANDELA_HD Color Bsdf::eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
+    Color f(0.0f);
     for (uint32_t k = 0; k < lobe_count; ++k)
         f += visit([&](const auto& lobe) { return lobe.eval(wo, wi, mode); }, lobes[k]);
     return f;
@@ -84,8 +84,8 @@ CANDELA_HD bool Bsdf::uses_choice() const {
     return visit([](const auto& lobe) { return bool(std::decay_t<decltype(lobe)>::kUsesChoice); }, lobes[0]);
 }
 
-CANDELA_HD Rgb Bsdf::albedo() const {
-    Rgb sum(0.0f);
+CANDELA_HD Color Bsdf::albedo() const {
+    Color sum(0.0f);
     for (uint32_t k = 0; k < lobe_count; ++k)
         sum += visit([](const auto& lobe) { return lobe.albedo(); }, lobes[k]);
     return sum;

@@ -22,7 +22,7 @@ struct Bsdf {
     uint32_t lobe_count = 0;
 
     // Sum of the lobes' f (delta lobes contribute 0).
-    CANDELA_HD Rgb eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const;
+    CANDELA_HD Color eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const;
     // Average over all lobes of their pdf, per solid angle (delta lobes contribute 0).
     CANDELA_HD float pdf(const Vec3f& wo, const Vec3f& wi) const;
     // uc picks the lobe, u samples it. nullopt when sampling fails (e.g. below the hemisphere).
@@ -32,7 +32,7 @@ struct Bsdf {
     // Whether sample() reads uc: to choose among several lobes, or inside the one lobe.
     CANDELA_HD bool uses_choice() const;
     // The colour the `albedo` debug integrator shows: the sum of the lobes' reflectance/tint.
-    CANDELA_HD Rgb albedo() const;
+    CANDELA_HD Color albedo() const;
     // Whether some lobe's eval() and pdf() are estimates (a coated lobe, layered.h).
     CANDELA_HD bool has_estimated_lobe() const;
 };

@@ -14,7 +14,7 @@ template <class T>
 concept BsdfLobeType = requires(const T& lobe, Vec3f wo, Vec3f wi, float uc, Vec2f u,
                                 TransportMode mode) {
     // f(wo, wi) without the cosine; 0 for a delta lobe (its f lives only in sample()).
-    { lobe.eval(wo, wi, mode) } -> std::same_as<Rgb>;
+    { lobe.eval(wo, wi, mode) } -> std::same_as<Color>;
     // Density of sample() per solid angle; 0 for a delta lobe.
     { lobe.pdf(wo, wi) } -> std::same_as<float>;
     // A direction wi for wo, from uc (a discrete choice inside the lobe) and u; nullopt when the
@@ -26,7 +26,7 @@ concept BsdfLobeType = requires(const T& lobe, Vec3f wo, Vec3f wi, float uc, Vec
     // that random number (Sampler::skip_float keeps the later ones where they were).
     { T::kUsesChoice } -> std::convertible_to<bool>;
     // The lobe's colour for the `albedo` debug view: its reflectance or tint.
-    { lobe.albedo() } -> std::same_as<Rgb>;
+    { lobe.albedo() } -> std::same_as<Color>;
 };
 
 // cos(theta) of a local-frame direction, and whether two directions share a hemisphere.

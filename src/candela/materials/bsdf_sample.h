@@ -1,6 +1,6 @@
 #pragma once
 // What sampling a BSDF returns, and the transport mode that decides how refraction scales.
-#include "candela/math/rgb.h"
+#include "candela/math/color.h"
 #include "candela/math/vec.h"
 
 namespace candela {
@@ -11,7 +11,7 @@ namespace candela {
 enum class TransportMode { kRadiance, kImportance };
 
 struct BsdfSample {
-    Rgb f;               // BSDF value for (wo, wi), without the cosine; for delta lobes the
+    Color f;               // BSDF value for (wo, wi), without the cosine; for delta lobes the
                          // value whose f |cos wi| / pdf is the lobe's weight (pbrt's convention)
     Vec3f wi;            // sampled incident direction, local shading frame, unit
     float pdf = 0.0f;    // per solid angle; for a delta lobe the discrete probability of the choice

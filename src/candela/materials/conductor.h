@@ -71,7 +71,7 @@ struct ConductorLobe {
     }
 
     // D G F / (4 cos_o cos_i) (+ f_ms) with wo, wi on one side; 0 otherwise and when smooth (delta).
-    CANDELA_HD Rgb eval(const Vec3f& wo, const Vec3f& wi, TransportMode) const {
+    CANDELA_HD Color eval(const Vec3f& wo, const Vec3f& wi, TransportMode) const {
         return evaluate(wo, wi).f;
     }
     // D_wo(wm) / (4 |wo.wm|) on wo's side (mixed with the cosine's |cos wi| / pi in proportions
@@ -120,7 +120,7 @@ struct ConductorLobe {
     static constexpr bool kUsesChoice = false;
     CANDELA_HD bool is_delta() const { return distribution.effectively_smooth(); }
     // The reflectance at normal incidence: the metal's colour.
-    CANDELA_HD Rgb albedo() const { return fresnel_complex(1.0f, eta, k); }
+    CANDELA_HD Color albedo() const { return fresnel_complex(1.0f, eta, k); }
 };
 static_assert(BsdfLobeType<ConductorLobe>);
 

@@ -113,7 +113,7 @@ struct DielectricLobe {
     }
 
     // f_r or f_t for the side wi is on; 0 when smooth (delta).
-    CANDELA_HD Rgb eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
+    CANDELA_HD Color eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
         return evaluate(wo, wi, mode).f;
     }
     // The density of sample() at wi, the reflect/refract choice included; 0 when smooth.
@@ -169,7 +169,7 @@ struct DielectricLobe {
     }
     static constexpr bool kUsesChoice = true;
     CANDELA_HD bool is_delta() const { return is_smooth(); }
-    CANDELA_HD Rgb albedo() const { return tint; }
+    CANDELA_HD Color albedo() const { return tint; }
 };
 static_assert(BsdfLobeType<DielectricLobe>);
 

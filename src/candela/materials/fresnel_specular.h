@@ -17,7 +17,7 @@
 namespace candela {
 
 struct FresnelSpecularLobe {
-    Rgb tint{1.0f};  // multiplies reflected and refracted light alike
+    Color tint{1.0f};  // multiplies reflected and refracted light alike
     float eta = 1.5f;
     bool schlick = false;
 
@@ -31,7 +31,7 @@ struct FresnelSpecularLobe {
     }
 
     // 0: a delta lobe.
-    CANDELA_HD Rgb eval(const Vec3f&, const Vec3f&, TransportMode) const { return Rgb(0.0f); }
+    CANDELA_HD Color eval(const Vec3f&, const Vec3f&, TransportMode) const { return Color(0.0f); }
     // 0: a delta lobe.
     CANDELA_HD float pdf(const Vec3f&, const Vec3f&) const { return 0.0f; }
     // Reflects when uc < F, else refracts (u unused); nullopt for wo in the plane.
@@ -62,7 +62,7 @@ struct FresnelSpecularLobe {
     }
     static constexpr bool kUsesChoice = true;
     CANDELA_HD bool is_delta() const { return true; }
-    CANDELA_HD Rgb albedo() const { return tint; }
+    CANDELA_HD Color albedo() const { return tint; }
 };
 static_assert(BsdfLobeType<FresnelSpecularLobe>);
 

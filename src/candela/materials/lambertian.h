@@ -10,11 +10,11 @@
 namespace candela {
 
 struct LambertianLobe {
-    Rgb reflectance{0.5f};  // directional albedo: the fraction of light reflected, per channel
+    Color reflectance{0.5f};  // directional albedo: the fraction of light reflected, per channel
 
     // albedo / pi when wo and wi share a hemisphere, else 0.
-    CANDELA_HD Rgb eval(const Vec3f& wo, const Vec3f& wi, TransportMode) const {
-        return same_hemisphere(wo, wi) ? reflectance * kInvPi : Rgb(0.0f);
+    CANDELA_HD Color eval(const Vec3f& wo, const Vec3f& wi, TransportMode) const {
+        return same_hemisphere(wo, wi) ? reflectance * kInvPi : Color(0.0f);
     }
     // |cos(theta_i)| / pi in wo's hemisphere, else 0.
     CANDELA_HD float pdf(const Vec3f& wo, const Vec3f& wi) const {
@@ -38,7 +38,7 @@ struct LambertianLobe {
     }
     static constexpr bool kUsesChoice = false;
     CANDELA_HD bool is_delta() const { return false; }
-    CANDELA_HD Rgb albedo() const { return reflectance; }
+    CANDELA_HD Color albedo() const { return reflectance; }
 };
 static_assert(BsdfLobeType<LambertianLobe>);
 

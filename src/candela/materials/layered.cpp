@@ -57,7 +57,7 @@ constexpr uint64_t kSampleSalt = 0x73616d706c650000ull;  // "sample"
 }  // namespace
 
 template <class Base>
-CANDELA_HD Rgb LayeredLobe<Base>::eval(const Vec3f& wo_in, const Vec3f& wi_in, TransportMode mode) const {
+CANDELA_HD Color LayeredLobe<Base>::eval(const Vec3f& wo_in, const Vec3f& wi_in, TransportMode mode) const {
     Vec3f wo = wo_in, wi = wi_in;
     if (wo.z < 0.0f) {
         wo = -wo;
@@ -65,7 +65,7 @@ CANDELA_HD Rgb LayeredLobe<Base>::eval(const Vec3f& wo_in, const Vec3f& wi_in, T
     }
     // The base transmits nothing: light that enters through the coat leaves through it, on wo's
     // side (pbrt-v4's walk towards the base as exit interface finds no transmission there).
-    if (!same_hemisphere(wo, wi)) return Rgb(0.0f);
+    if (!same_hemisphere(wo, wi)) return Color(0.0f);
     const float thick = thickness > FLT_MIN ? thickness : FLT_MIN;
     const float exit_z = thick;  // light enters and leaves through the coat
     const bool coat_specular = coat.is_specular(), base_specular = base.is_delta();

@@ -66,7 +66,7 @@ struct LayeredLobe {
     uint16_t n_samples = 1;        // random walks per eval()
 
     // An estimate of f(wo, wi) without the cosine (see the top of the file).
-    CANDELA_HD Rgb eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const;
+    CANDELA_HD Color eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const;
     // pbrt-v4's approximate sampling density per solid angle, > 0 on the whole sphere; 0 for a
     // delta-only lobe.
     CANDELA_HD float pdf(const Vec3f& wo, const Vec3f& wi) const;
@@ -81,7 +81,7 @@ struct LayeredLobe {
         return coat.is_specular() && base.is_delta() && medium_albedo.is_black();
     }
     // The base's colour (its reflectance, or a conductor's colour at normal incidence).
-    CANDELA_HD Rgb albedo() const { return base.albedo(); }
+    CANDELA_HD Color albedo() const { return base.albedo(); }
 
   private:
     CANDELA_HD float pdf_upper(const Vec3f& wo, const Vec3f& wi) const;

@@ -26,7 +26,7 @@ concept LobeParamsType = requires(const T& p, const TextureSet& textures, const 
 
 // `diffuse`: Lambertian reflection.
 struct DiffuseParams {
-    ColorParam albedo{Color(0.5f)};
+    ColorParam albedo{Rgb(0.5f)};
 
     CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
         return LambertianLobe{t.eval(albedo, ctx)};
@@ -37,7 +37,7 @@ static_assert(LobeParamsType<DiffuseParams>);
 
 // `mirror`: perfect specular reflection scaled by albedo.
 struct MirrorParams {
-    ColorParam albedo{Color(1.0f)};
+    ColorParam albedo{Rgb(1.0f)};
 
     CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
         return SpecularReflectionLobe{t.eval(albedo, ctx)};
@@ -49,7 +49,7 @@ static_assert(LobeParamsType<MirrorParams>);
 // `dielectric` (smooth): glass of index `ior` (inside over outside), exact Fresnel or Schlick's.
 struct DielectricParams {
     float ior = 1.5f;
-    ColorParam tint{Color(1.0f)};
+    ColorParam tint{Rgb(1.0f)};
     bool schlick = false;
 
     CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
@@ -62,7 +62,7 @@ static_assert(LobeParamsType<DielectricParams>);
 // `transmission`: the refracted part of a smooth dielectric only.
 struct TransmissionParams {
     float ior = 1.5f;
-    ColorParam tint{Color(1.0f)};
+    ColorParam tint{Rgb(1.0f)};
 
     CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
         return SpecularTransmissionLobe{t.eval(tint, ctx), ior};
@@ -90,8 +90,8 @@ struct RoughnessParams {
 // `conductor` by its complex index of refraction eta + i k, per channel (given, or of a measured
 // `metal`); `multiscatter` adds the compensation of microfacet_multiscatter.h.
 struct ConductorParams {
-    ColorParam eta{Color(1.0f)};
-    ColorParam k{Color(0.0f)};
+    ColorParam eta{Rgb(1.0f)};
+    ColorParam k{Rgb(0.0f)};
     RoughnessParams roughness;
     bool multiscatter = false;
 
@@ -117,7 +117,7 @@ CANDELA_HD inline Color conductor_k_for_reflectance(const Color& reflectance) {
 
 // `conductor` by its reflectance at normal incidence: eta = 1, k = conductor_k_for_reflectance.
 struct ConductorReflectanceParams {
-    ColorParam reflectance{Color(1.0f)};
+    ColorParam reflectance{Rgb(1.0f)};
     RoughnessParams roughness;
     bool multiscatter = false;
 
@@ -135,7 +135,7 @@ static_assert(LobeParamsType<ConductorReflectanceParams>);
 // `dielectric` with a `roughness`: microfacet glass (DielectricLobe, smooth below alpha 1e-3).
 struct RoughDielectricParams {
     float ior = 1.5f;
-    ColorParam tint{Color(1.0f)};
+    ColorParam tint{Rgb(1.0f)};
     RoughnessParams roughness;
     bool multiscatter = false;  // add the compensation of microfacet_multiscatter.h
 
@@ -167,7 +167,7 @@ struct CoatParams {
     RoughnessParams roughness;  // the coat's (pbrt-v4's uroughness, vroughness, not remapped)
     float ior = 1.5f;           // the coat's index over the outside's; pbrt-v4's 0 means 1
     FloatParam thickness{0.01f};
-    ColorParam medium_albedo{Color(0.0f)};  // pbrt-v4's `albedo`
+    ColorParam medium_albedo{Rgb(0.0f)};  // pbrt-v4's `albedo`
     FloatParam g{0.0f};
     uint16_t max_depth = 10;
     uint16_t n_samples = 1;
@@ -191,7 +191,7 @@ struct CoatParams {
 // `coated_diffuse`: a dielectric coat over a Lambertian base of reflectance `albedo`.
 struct CoatedDiffuseParams {
     CoatParams coat;
-    ColorParam albedo{Color(0.5f)};  // the base's reflectance (pbrt-v4's `reflectance`)
+    ColorParam albedo{Rgb(0.5f)};  // the base's reflectance (pbrt-v4's `reflectance`)
 
     CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
         CoatedDiffuseLobe l;
@@ -211,9 +211,9 @@ struct CoatedConductorParams {
     CoatParams coat;
     // pbrt-v4's default base, copper: its metal-Cu-eta and metal-Cu-k spectra
     // interpolated at 650, 550 and 450 nm for red, green and blue.
-    ColorParam conductor_eta{Color(0.216561f, 0.958162f, 1.165808f)};
-    ColorParam conductor_k{Color(3.637741f, 2.577065f, 2.393857f)};
-    ColorParam reflectance{Color(0.0f)};
+    ColorParam conductor_eta{Rgb(0.216561f, 0.958162f, 1.165808f)};
+    ColorParam conductor_k{Rgb(3.637741f, 2.577065f, 2.393857f)};
+    ColorParam reflectance{Rgb(0.0f)};
     bool from_reflectance = false;  // use `reflectance` instead of eta and k
     RoughnessParams conductor_roughness;
 

@@ -110,6 +110,6 @@ inline Material make_mix(std::span<const Material> parts) {
 }
 
 // The surface colour the `albedo` integrator shows: the sum of the lobes' albedo or tint.
-CANDELA_HD inline Rgb material_albedo(const Material& m) { return m.bsdf.albedo(); }
+CANDELA_HD inline Color material_albedo(const Material& m) { return m.bsdf.albedo(); }
 
 }  // namespace candela

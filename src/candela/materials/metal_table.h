@@ -10,7 +10,7 @@
 // RGB values only: spectral rendering will use the spectra themselves.
 #include <array>
 
-#include "candela/math/rgb.h"
+#include "candela/math/color.h"
 
 namespace candela {
 

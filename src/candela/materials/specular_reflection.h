@@ -10,10 +10,10 @@
 namespace candela {
 
 struct SpecularReflectionLobe {
-    Rgb reflectance{1.0f};
+    Color reflectance{1.0f};
 
     // 0: no two directions chosen independently are mirror images.
-    CANDELA_HD Rgb eval(const Vec3f&, const Vec3f&, TransportMode) const { return Rgb(0.0f); }
+    CANDELA_HD Color eval(const Vec3f&, const Vec3f&, TransportMode) const { return Color(0.0f); }
     // 0, as eval.
     CANDELA_HD float pdf(const Vec3f&, const Vec3f&) const { return 0.0f; }
     // The mirrored direction, on wo's side (uc and u unused); nullopt for wo in the plane.
@@ -29,7 +29,7 @@ struct SpecularReflectionLobe {
     }
     static constexpr bool kUsesChoice = false;
     CANDELA_HD bool is_delta() const { return true; }
-    CANDELA_HD Rgb albedo() const { return reflectance; }
+    CANDELA_HD Color albedo() const { return reflectance; }
 };
 static_assert(BsdfLobeType<SpecularReflectionLobe>);
 

@@ -12,11 +12,11 @@
 namespace candela {
 
 struct SpecularTransmissionLobe {
-    Rgb tint{1.0f};
+    Color tint{1.0f};
     float eta = 1.5f;
 
     // 0: a delta lobe.
-    CANDELA_HD Rgb eval(const Vec3f&, const Vec3f&, TransportMode) const { return Rgb(0.0f); }
+    CANDELA_HD Color eval(const Vec3f&, const Vec3f&, TransportMode) const { return Color(0.0f); }
     // 0: a delta lobe.
     CANDELA_HD float pdf(const Vec3f&, const Vec3f&) const { return 0.0f; }
     // The refracted direction (uc and u unused); nullopt under total internal reflection.
@@ -40,7 +40,7 @@ struct SpecularTransmissionLobe {
     }
     static constexpr bool kUsesChoice = false;
     CANDELA_HD bool is_delta() const { return true; }
-    CANDELA_HD Rgb albedo() const { return tint; }
+    CANDELA_HD Color albedo() const { return tint; }
 };
 static_assert(BsdfLobeType<SpecularTransmissionLobe>);
 

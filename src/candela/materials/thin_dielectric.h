@@ -26,7 +26,7 @@ struct ThinDielectricLobe {
     }
 
     // 0: a delta lobe.
-    CANDELA_HD Rgb eval(const Vec3f&, const Vec3f&, TransportMode) const { return Rgb(0.0f); }
+    CANDELA_HD Color eval(const Vec3f&, const Vec3f&, TransportMode) const { return Color(0.0f); }
     // 0: a delta lobe.
     CANDELA_HD float pdf(const Vec3f&, const Vec3f&) const { return 0.0f; }
     // The mirror direction when uc < R', else -wo (u unused); nullopt for wo in the plane.
@@ -39,19 +39,19 @@ struct ThinDielectricLobe {
         s.is_delta = true;
         if (uc < r) {
             s.wi = {-wo.x, -wo.y, wo.z};
-            s.f = Rgb(r / abs_cos_theta(s.wi));
+            s.f = Color(r / abs_cos_theta(s.wi));
             s.pdf = r;
             return result;
         }
         s.wi = -wo;
-        s.f = Rgb((1.0f - r) / abs_cos_theta(s.wi));
+        s.f = Color((1.0f - r) / abs_cos_theta(s.wi));
         s.pdf = 1.0f - r;
         s.is_transmission = true;
         return result;
     }
     static constexpr bool kUsesChoice = true;
     CANDELA_HD bool is_delta() const { return true; }
-    CANDELA_HD Rgb albedo() const { return Rgb(1.0f); }
+    CANDELA_HD Color albedo() const { return Color(1.0f); }
 };
 static_assert(BsdfLobeType<ThinDielectricLobe>);
 

@@ -1,8 +1,17 @@
 #pragma once
-// The colour type that materials, textures and lights compute with. It is linear RGB today
-// (math/rgb.h); the spectral mode (issue 14) makes it the values of a path's four wavelengths.
-// Code written against `Color` and the element-wise helpers below, never reading .r/.g/.b,
-// works unchanged for both: a colour is a small fixed-width vector of channel values.
+// The colour type that materials, textures and lights compute with and paths carry: four channel
+// values, a small fixed-width vector the compiler keeps in one SSE register.
+//
+// - In RGB mode the channels are (r, g, b, r): the fourth repeats red, so that every per-channel
+//   operation gives the three RGB channels exactly as three floats would, and the reductions
+//   transport uses (max_component, is_black, is_finite) see the same three values. to_rgb()
+//   reads the first three.
+// - In spectral mode (spectrum/sampled_wavelengths.h) they are a path's values at its four
+//   wavelengths (pbrt-v4's SampledSpectrum with NSpectrumSamples = 4).
+//
+// Code written against Color and the element-wise helpers below, never naming channels, works
+// unchanged in both modes. A colour from three RGB values is an RGB-mode colour only
+// (from_rgb); spectral mode makes colours from spectra (spectrum/).
 #include <cmath>
 
 #include "candela/core/platform.h"
@@ -10,41 +19,128 @@
 
 namespace candela {
 
-using Color = Rgb;
+inline constexpr int kColorChannels = 4;
+
+struct alignas(16) Color {
+    float c[kColorChannels] = {0.0f, 0.0f, 0.0f, 0.0f};
+
+    CANDELA_HD constexpr Color() = default;
+    // The same value in every channel: grey in RGB mode, a constant spectrum in spectral mode.
+    CANDELA_HD explicit constexpr Color(float v) : c{v, v, v, v} {}
+    // An RGB-mode colour: (r, g, b, r). An Rgb converts to it implicitly, as when Color was Rgb;
+    // spectral code never holds an Rgb where it needs a colour (spectrum/ makes those).
+    CANDELA_HD constexpr Color(float r, float g, float b) : c{r, g, b, r} {}
+    CANDELA_HD constexpr Color(const Rgb& v) : c{v.r, v.g, v.b, v.r} {}
+    CANDELA_HD static constexpr Color from_channels(float c0, float c1, float c2, float c3) {
+        Color x;
+        x.c[0] = c0; x.c[1] = c1; x.c[2] = c2; x.c[3] = c3;
+        return x;
+    }
+
+    CANDELA_HD constexpr float operator[](int i) const { return c[i]; }
+    CANDELA_HD constexpr float& operator[](int i) { return c[i]; }
+
+#define CANDELA_COLOR_OP(OP)                                                                      \
+    CANDELA_HD constexpr Color operator OP(const Color& o) const {                                 \
+        Color r;                                                                                   \
+        for (int i = 0; i < kColorChannels; ++i) r.c[i] = c[i] OP o.c[i];                          \
+        return r;                                                                                  \
+    }                                                                                              \
+    CANDELA_HD constexpr Color operator OP(float s) const {                                        \
+        Color r;                                                                                   \
+        for (int i = 0; i < kColorChannels; ++i) r.c[i] = c[i] OP s;                               \
+        return r;                                                                                  \
+    }                                                                                              \
+    CANDELA_HD constexpr Color& operator OP##=(const Color& o) {                                   \
+        for (int i = 0; i < kColorChannels; ++i) c[i] OP## = o.c[i];                               \
+        return *this;                                                                              \
+    }                                                                                              \
+    CANDELA_HD constexpr Color& operator OP##=(float s) {                                          \
+        for (int i = 0; i < kColorChannels; ++i) c[i] OP## = s;                                    \
+        return *this;                                                                              \
+    }
+    CANDELA_COLOR_OP(+)
+    CANDELA_COLOR_OP(-)
+    CANDELA_COLOR_OP(*)
+    CANDELA_COLOR_OP(/)
+#undef CANDELA_COLOR_OP
+
+    CANDELA_HD constexpr bool operator==(const Color& o) const {
+        for (int i = 0; i < kColorChannels; ++i)
+            if (c[i] != o.c[i]) return false;
+        return true;
+    }
+
+    CANDELA_HD constexpr bool is_black() const {
+        for (int i = 0; i < kColorChannels; ++i)
+            if (c[i] != 0.0f) return false;
+        return true;
+    }
+    CANDELA_HD constexpr float max_component() const {
+        float a = c[0] > c[1] ? c[0] : c[1];  // a tree of maxss, no branch
+        float b = c[2] > c[3] ? c[2] : c[3];
+        return a > b ? a : b;
+    }
+    CANDELA_HD bool is_finite() const {
+        return std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]) && std::isfinite(c[3]);
+    }
+};
+
+CANDELA_HD constexpr Color operator*(float s, const Color& x) { return x * s; }
+
+// RGB mode: the colour of an RGB value, and the RGB value of a colour.
+CANDELA_HD constexpr Color from_rgb(const Rgb& v) { return Color(v.r, v.g, v.b); }
+CANDELA_HD constexpr Rgb to_rgb(const Color& x) { return Rgb(x.c[0], x.c[1], x.c[2]); }
 
 // Applies f to every channel.
 template <class F>
-CANDELA_HD inline Color map_channels(const Color& c, F&& f) {
-    return Color(f(c.r), f(c.g), f(c.b));
+CANDELA_HD inline Color map_channels(const Color& x, F&& f) {
+    Color r;
+    for (int i = 0; i < kColorChannels; ++i) r.c[i] = f(x.c[i]);
+    return r;
 }
 // Applies f to the channels of a and b pairwise.
 template <class F>
 CANDELA_HD inline Color map_channels(const Color& a, const Color& b, F&& f) {
-    return Color(f(a.r, b.r), f(a.g, b.g), f(a.b, b.b));
+    Color r;
+    for (int i = 0; i < kColorChannels; ++i) r.c[i] = f(a.c[i], b.c[i]);
+    return r;
 }
 
 // Element-wise quotient; a channel divided by 0 gives 0 (a black denominator means "no light").
 CANDELA_HD inline Color safe_div(const Color& a, const Color& b) {
     return map_channels(a, b, [](float x, float y) { return y != 0.0f ? x / y : 0.0f; });
 }
-CANDELA_HD inline Color sqrt_channels(const Color& c) {
-    return map_channels(c, [](float x) { return std::sqrt(x > 0.0f ? x : 0.0f); });
+CANDELA_HD inline Color sqrt_channels(const Color& x) {
+    return map_channels(x, [](float v) { return std::sqrt(v > 0.0f ? v : 0.0f); });
 }
-CANDELA_HD inline Color exp_channels(const Color& c) {
-    return map_channels(c, [](float x) { return std::exp(x); });
+CANDELA_HD inline Color exp_channels(const Color& x) {
+    return map_channels(x, [](float v) { return std::exp(v); });
 }
-CANDELA_HD inline Color clamp_channels(const Color& c, float lo, float hi) {
-    return map_channels(c, [lo, hi](float x) { return x < lo ? lo : (x > hi ? hi : x); });
+CANDELA_HD inline Color clamp_channels(const Color& x, float lo, float hi) {
+    return map_channels(x, [lo, hi](float v) { return v < lo ? lo : (v > hi ? hi : v); });
 }
 // The smallest channel value.
-CANDELA_HD inline float min_component(const Color& c) {
-    float m = c.r < c.g ? c.r : c.g;
-    return m < c.b ? m : c.b;
+CANDELA_HD inline float min_component(const Color& x) {
+    float a = x.c[0] < x.c[1] ? x.c[0] : x.c[1];
+    float b = x.c[2] < x.c[3] ? x.c[2] : x.c[3];
+    return a < b ? a : b;
 }
-// The mean of the channels, exactly the value of a grey colour (a sum of three equal values
-// divided by 3 may differ from it in the last bit): how a colour is read as one number.
-CANDELA_HD inline float channel_average(const Color& c) {
-    return c.r == c.g && c.g == c.b ? c.r : (c.r + c.g + c.b) / 3.0f;
+// The mean of the channels (spectral mode's Average), exactly the value of a constant colour (a
+// sum of equal values divided by their count may differ from it in the last bit).
+CANDELA_HD inline float channel_average(const Color& x) {
+    if (x.c[0] == x.c[1] && x.c[1] == x.c[2] && x.c[2] == x.c[3]) return x.c[0];
+    return (x.c[0] + x.c[1] + x.c[2] + x.c[3]) / 4.0f;
+}
+
+// Rgb helpers for texture values (textures hold RGB in both modes).
+CANDELA_HD inline Rgb clamp_channels(const Rgb& x, float lo, float hi) {
+    auto f = [lo, hi](float v) { return v < lo ? lo : (v > hi ? hi : v); };
+    return Rgb(f(x.r), f(x.g), f(x.b));
+}
+// The mean of the three channels, exactly the value of a grey.
+CANDELA_HD inline float channel_average(const Rgb& x) {
+    return x.r == x.g && x.g == x.b ? x.r : (x.r + x.g + x.b) / 3.0f;
 }
 
 }  // namespace candela

@@ -5,7 +5,7 @@ namespace candela {
 
 // smallpt's radiance(): follow BSDF samples and add emission wherever the path lands.
 Rgb BsdfIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const {
-    Rgb L(0.0f), beta(1.0f);
+    Color L(0.0f), beta(1.0f);
     float eta_scale = 1.0f;
     Ray ray = camera_ray;
     for (int bounces = 0;; ++bounces) {
@@ -27,7 +27,7 @@ Rgb BsdfIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounter
         if (bs->is_transmission) eta_scale *= sqr(bs->eta);
         if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, roulette_number)) break;
     }
-    return L;
+    return to_rgb(L);
 }
 
 }  // namespace candela

@@ -28,8 +28,8 @@ Rgb AlbedoIntegrator::radiance(const Ray& ray, Sampler&, RayCounters& counters) 
     if (!hit) return Rgb(0.0f);
     const Material& m = scene_.materials[scene_.shapes[hit->shape_id].material];
     // A textured material shows its textures at the hit, as it shades there.
-    if (m.textured) return build_bsdf(m, scene_.textures, TextureContext{accel_.uv(*hit), hit->p}).albedo();
-    return material_albedo(m);
+    if (m.textured) return to_rgb(build_bsdf(m, scene_.textures, TextureContext{accel_.uv(*hit), hit->p}).albedo());
+    return to_rgb(material_albedo(m));
 }
 
 Rgb AoIntegrator::radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const {

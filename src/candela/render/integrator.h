@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "candela/math/ray.h"
-#include "candela/math/rgb.h"
+#include "candela/math/color.h"
 #include "candela/render/ray_counters.h"
 #include "candela/sampling/sampler.h"
 

@@ -116,7 +116,7 @@ inline float draw_roulette_number(Sampler& sampler, int bounces, const Integrato
 // is the throughput's largest component (with refraction's eta^2 radiance scaling taken out, as
 // pbrt-v4 does, so a path inside glass is not killed for being compressed); a fixed probability
 // when the settings give one (GAMES101's 0.8).
-inline bool survive_russian_roulette(Rgb& beta, float eta_scale, int bounces, const IntegratorSettings& s, float u) {
+inline bool survive_russian_roulette(Color& beta, float eta_scale, int bounces, const IntegratorSettings& s, float u) {
     if (bounces <= s.rr_depth) return true;
     float survive = s.rr_probability > 0.0f ? s.rr_probability : std::min(1.0f, (beta * eta_scale).max_component());
     if (survive <= 0.0f || u >= survive) return false;
@@ -128,19 +128,19 @@ inline bool survive_russian_roulette(Rgb& beta, float eta_scale, int bounces, co
 // against BSDF sampling when `mis`, except for a delta light (point, spot, directional), which BSDF
 // sampling cannot find: its weight is 1 (pbrt-v4's PathIntegrator::SampleLd). Counts its shadow
 // ray. Black for delta-only BSDFs.
-inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, const Accelerator& accel, bool mis,
+inline Color sample_direct_light(const PathVertex& v, const LightSet& lights, const Accelerator& accel, bool mis,
                                const LightNumbers& n, RayCounters& counters) {
-    if (v.bsdf.is_delta_only() || lights.empty()) return Rgb(0.0f);
+    if (v.bsdf.is_delta_only() || lights.empty()) return Color(0.0f);
     std::optional<LightSample> ls = lights.sample(v.hit.p, n.uc, n.u);
-    if (!ls || ls->pdf <= 0.0f || ls->Le.is_black()) return Rgb(0.0f);
+    if (!ls || ls->pdf <= 0.0f || ls->Le.is_black()) return Color(0.0f);
     Vec3f wi = v.frame.to_local(ls->wi);
-    Rgb f = v.bsdf.eval(v.wo, wi, TransportMode::kRadiance) * std::abs(wi.z);
-    if (f.is_black()) return Rgb(0.0f);
+    Color f = v.bsdf.eval(v.wo, wi, TransportMode::kRadiance) * std::abs(wi.z);
+    if (f.is_black()) return Color(0.0f);
     ++counters.shadow;
     // Towards the environment or a directional light the shadow ray runs to infinity; towards a
     // surface or a point light it stops short.
     Ray shadow = ls->infinite ? spawn_ray(v.hit, ls->wi) : spawn_ray_to(v.hit, ls->p);
-    if (accel.occluded(shadow)) return Rgb(0.0f);
+    if (accel.occluded(shadow)) return Color(0.0f);
     float w = mis && !ls->is_delta ? power_heuristic(ls->pdf, v.bsdf.pdf(v.wo, wi)) : 1.0f;
     return f * ls->Le * (w / ls->pdf);
 }
@@ -148,7 +148,7 @@ inline Rgb sample_direct_light(const PathVertex& v, const LightSet& lights, cons
 // Samples the BSDF with `n` for the path's next direction and moves the path there:
 // beta *= f |cos| / pdf and `ray` becomes the spawned ray. Returns the sample, or nullopt when the
 // path ends here.
-inline std::optional<BsdfSample> continue_path(const PathVertex& v, const BsdfNumbers& n, Rgb& beta, Ray& ray) {
+inline std::optional<BsdfSample> continue_path(const PathVertex& v, const BsdfNumbers& n, Color& beta, Ray& ray) {
     std::optional<BsdfSample> bs = v.bsdf.sample(v.wo, n.uc, n.u, TransportMode::kRadiance);
     if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) return std::nullopt;
     beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);

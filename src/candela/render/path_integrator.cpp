@@ -7,7 +7,7 @@ namespace candela {
 // by the BSDF-sampled ray (MIS-weighted against having sampled the light), then one light sample
 // (MIS-weighted against having sampled the BSDF), then the next direction by BSDF sampling.
 Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const {
-    Rgb L(0.0f), beta(1.0f);
+    Color L(0.0f), beta(1.0f);
     float eta_scale = 1.0f;  // product of eta^2 over refractions, to undo them for roulette
     Ray ray = camera_ray;
     bool after_delta = false;  // the last bounce was a delta lobe: NEE could not have found the light
@@ -22,7 +22,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounter
         std::optional<SurfaceHit> hit = accel_.intersect(ray);
         if (!hit) {
             // The ray escapes to the environment: the same MIS rule as for hitting an emitter.
-            Rgb Le = lights_.environment_radiance(ray.d);
+            Color Le = lights_.environment_radiance(ray.d);
             if (bounces == 0 || after_delta)
                 L += beta * Le;
             else if (scene_.integrator.mis)
@@ -30,7 +30,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounter
             break;
         }
 
-        Rgb Le = lights_.emitted(hit->shape_id, hit->ng, -ray.d);
+        Color Le = lights_.emitted(hit->shape_id, hit->ng, -ray.d);
         if (!Le.is_black()) {
             if (bounces == 0 || after_delta) {
                 L += beta * Le;
@@ -53,7 +53,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounter
         prev_p = hit->p;
         if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, roulette_number)) break;
     }
-    return L;
+    return to_rgb(L);
 }
 
 }  // namespace candela

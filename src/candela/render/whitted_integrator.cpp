@@ -4,7 +4,7 @@
 namespace candela {
 
 Rgb WhittedIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const {
-    Rgb L(0.0f), beta(1.0f);
+    Color L(0.0f), beta(1.0f);
     Ray ray = camera_ray;
     for (int bounces = 0;; ++bounces) {
         ++(bounces == 0 ? counters.camera : counters.bounce);
@@ -27,7 +27,7 @@ Rgb WhittedIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCoun
         std::optional<BsdfSample> bs = continue_path(v, bsdf_numbers, beta, ray);
         if (!bs || !bs->is_delta) break;
     }
-    return L;
+    return to_rgb(L);
 }
 
 }  // namespace candela

@@ -96,7 +96,7 @@ struct DeltaEmission {
 DeltaEmission read_delta_emission(JsonCursor& c, std::string_view key) {
     DeltaEmission e;
     std::optional<JsonCursor> color = c.get(key);
-    if (color) e.color = color->colour(Bounds::at_least(0));
+    if (color) e.color = from_rgb(color->colour(Bounds::at_least(0)));
     float scale = 1.0f;
     if (auto v = c.get("scale")) scale = v->number_f(Bounds::at_least(0));
     if (auto v = c.get("power")) e.power = v->number_f(Bounds::at_least(0));

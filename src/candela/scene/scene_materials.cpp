@@ -132,7 +132,7 @@ LobeParams read_lobe(JsonCursor& c, std::string_view type, Scene& scene) {
     float ior = 1.5f;
     if (auto v = c.get("ior")) ior = v->number_f(Bounds::above(0));
     if (type == "thin_dielectric") return ThinDielectricParams{ior};
-    ColorParam tint{Color(1.0f)};
+    ColorParam tint{Rgb(1.0f)};
     if (auto v = c.get("tint")) tint = read_color_param(*v, scene, kReflectance);
     if (type == "transmission") return TransmissionParams{ior, tint};
     std::optional<JsonCursor> fresnel = c.get("fresnel");

@@ -57,7 +57,7 @@ class TextureReader {
     ColorParam color_param(JsonCursor c, const Bounds& bounds) {
         if (!c.is_object()) return ColorParam{c.colour(bounds)};
         const auto [lo, hi] = clamp_range(bounds);
-        return ColorParam{Color(placeholder(lo, hi)), texture_of(c), lo, hi};
+        return ColorParam{Rgb(placeholder(lo, hi)), texture_of(c), lo, hi};
     }
 
     FloatParam float_param(JsonCursor c, const Bounds& bounds) {
@@ -75,7 +75,7 @@ class TextureReader {
         t.image = image_index(c, std::nullopt, TextureColorspace::kLinear);
         const uint32_t index = scene_.textures.add(t);
         scene_.texture_names.emplace_back();
-        return ColorParam{Color(1.0f), index, 0.0f, 1.0f};
+        return ColorParam{Rgb(1.0f), index, 0.0f, 1.0f};
     }
 
   private:

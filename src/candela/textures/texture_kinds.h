@@ -20,7 +20,7 @@ namespace candela {
 template <class T, class Set>
 concept TextureKind = requires(const T& t, const Set& set, const TextureContext& ctx) {
     // The value as a colour and as a number at ctx.
-    { t.color(set, ctx) } -> std::same_as<Color>;
+    { t.color(set, ctx) } -> std::same_as<Rgb>;
     { t.number(set, ctx) } -> std::same_as<float>;
     // The textures it reads (indices into the set), each passed to f; for the loader's checks.
     t.for_each_input([](uint32_t) {});
@@ -28,10 +28,10 @@ concept TextureKind = requires(const T& t, const Set& set, const TextureContext&
 
 // `constant`: one value everywhere; read as a number, the average of its channels.
 struct ConstantTexture {
-    Color value;
+    Rgb value;
 
     template <class Set>
-    CANDELA_HD Color color(const Set&, const TextureContext&) const { return value; }
+    CANDELA_HD Rgb color(const Set&, const TextureContext&) const { return value; }
     template <class Set>
     CANDELA_HD float number(const Set&, const TextureContext&) const { return channel_average(value); }
     template <class F>
@@ -51,11 +51,10 @@ struct ImageTexture {
     bool invert = false;
 
     template <class Set>
-    CANDELA_HD Color color(const Set& set, const TextureContext& ctx) const {
+    CANDELA_HD Rgb color(const Set& set, const TextureContext& ctx) const {
         Rgb v = set.image(image).lookup(uv.apply(ctx.uv), wrap, filter).rgb * scale;
         if (invert) v = Rgb(1.0f) - v;
-        // The image holds RGB; in spectral mode this is where it becomes the colour type.
-        return clamp_channels(Color(v), 0.0f, kUnbounded);
+        return clamp_channels(v, 0.0f, kUnbounded);
     }
     template <class Set>
     CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
@@ -71,8 +70,8 @@ struct ImageTexture {
 // transformed uv (pbrt-v4's checkerboard without its antialiasing filter; color0 and color1 are
 // its tex1 and tex2). Each colour may itself be a texture, evaluated only where it shows.
 struct CheckerboardTexture {
-    ColorParam color0{Color(1.0f)};
-    ColorParam color1{Color(0.0f)};
+    ColorParam color0{Rgb(1.0f)};
+    ColorParam color1{Rgb(0.0f)};
     UvTransform uv;
 
     // Whether (s, t) lies on a color1 square. In float: every float beyond 2^24 is an even
@@ -83,8 +82,8 @@ struct CheckerboardTexture {
     }
 
     template <class Set>
-    CANDELA_HD Color color(const Set& set, const TextureContext& ctx) const {
-        return set.eval(odd(ctx) ? color1 : color0, ctx);
+    CANDELA_HD Rgb color(const Set& set, const TextureContext& ctx) const {
+        return set.rgb(odd(ctx) ? color1 : color0, ctx);
     }
     template <class Set>
     CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
@@ -99,12 +98,12 @@ struct CheckerboardTexture {
 
 // `scale`: `tex` times the number `scale` (pbrt-v4's scale texture).
 struct ScaleTexture {
-    ColorParam tex{Color(1.0f)};
+    ColorParam tex{Rgb(1.0f)};
     FloatParam scale{1.0f};
 
     template <class Set>
-    CANDELA_HD Color color(const Set& set, const TextureContext& ctx) const {
-        return set.eval(tex, ctx) * set.eval(scale, ctx);
+    CANDELA_HD Rgb color(const Set& set, const TextureContext& ctx) const {
+        return set.rgb(tex, ctx) * set.eval(scale, ctx);
     }
     template <class Set>
     CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
@@ -120,16 +119,16 @@ struct ScaleTexture {
 // `mix`: (1 - amount) tex1 + amount tex2, the number `amount` in [0, 1] (pbrt-v4's mix; as
 // there, an input whose weight is 0 is not evaluated).
 struct MixTexture {
-    ColorParam tex1{Color(0.0f)};
-    ColorParam tex2{Color(1.0f)};
+    ColorParam tex1{Rgb(0.0f)};
+    ColorParam tex2{Rgb(1.0f)};
     FloatParam amount{0.5f, kNoTexture, 0.0f, 1.0f};
 
     template <class Set>
-    CANDELA_HD Color color(const Set& set, const TextureContext& ctx) const {
+    CANDELA_HD Rgb color(const Set& set, const TextureContext& ctx) const {
         const float a = set.eval(amount, ctx);
-        Color c(0.0f);
-        if (a != 1.0f) c += set.eval(tex1, ctx) * (1.0f - a);
-        if (a != 0.0f) c += set.eval(tex2, ctx) * a;
+        Rgb c(0.0f);
+        if (a != 1.0f) c += set.rgb(tex1, ctx) * (1.0f - a);
+        if (a != 0.0f) c += set.rgb(tex2, ctx) * a;
         return c;
     }
     template <class Set>

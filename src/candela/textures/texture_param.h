@@ -26,7 +26,7 @@ struct FloatParam {
 };
 
 struct ColorParam {
-    Color value;
+    Rgb value;  // the constant, in linear RGB (both modes' textures work in RGB)
     uint32_t texture = kNoTexture;
     float lo = -kUnbounded;  // each channel of a texture's value is clamped to [lo, hi]
     float hi = kUnbounded;

@@ -37,6 +37,10 @@ class TextureSet {
         return v < p.lo ? p.lo : (v > p.hi ? p.hi : v);
     }
     CANDELA_HD Color eval(const ColorParam& p, const TextureContext& ctx) const {
+        return from_rgb(rgb(p, ctx));
+    }
+    // The parameter's RGB value at ctx (texture inputs are RGB in both modes).
+    CANDELA_HD Rgb rgb(const ColorParam& p, const TextureContext& ctx) const {
         if (!holds(p.texture)) return p.value;
         return clamp_channels(color(p.texture, ctx), p.lo, p.hi);
     }
@@ -44,7 +48,7 @@ class TextureSet {
     // x, y, z), clamped as eval's. Colours are RGB today; the spectral mode must read the RGB of
     // the texture here, never a spectrum.
     CANDELA_HD Vec3f eval_vector(const ColorParam& p, const TextureContext& ctx) const {
-        const Color c = eval(p, ctx);
+        const Rgb c = rgb(p, ctx);
         return Vec3f(c.r, c.g, c.b);
     }
     // A colour parameter read as a number (a texture input that gives a number: `mix` of numbers).
@@ -55,7 +59,7 @@ class TextureSet {
     }
 
     // Texture i's colour and number at ctx.
-    CANDELA_HD Color color(uint32_t i, const TextureContext& ctx) const {
+    CANDELA_HD Rgb color(uint32_t i, const TextureContext& ctx) const {
         return visit([&](const auto& t) { return t.color(*this, ctx); }, textures_[i]);
     }
     CANDELA_HD float number(uint32_t i, const TextureContext& ctx) const {
