@@ -224,7 +224,7 @@ def write_table(path, rows):
         "// RGB values only: spectral rendering will use the spectra themselves.",
         "#include <array>",
         "",
-        '#include "candela/math/rgb.h"',
+        '#include "candela/math/color.h"',
         "",
         "namespace candela {",
         "",
