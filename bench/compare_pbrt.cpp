@@ -1,0 +1,55 @@
+// candela_compare_pbrt TEST REFERENCE [--bounds MEAN P95]: compares a candela render with pbrt-v4's
+// render of the same scene as ../shared/refs/pbrt-v4/README.md defines (bench/block_compare.h):
+// the mean ratio per channel (sum TEST / sum REFERENCE) and the p50, p95 and maximum of the 16x16
+// blocks' relative luminance differences, blocks darker than 5% of the median block left out.
+// With --bounds (scenes.txt's two columns), exits 1 when a channel's |ratio - 1| exceeds MEAN or
+// the block p95 exceeds P95; 2 for usage or file errors.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "bench/block_compare.h"
+#include "candela/image/image_io.h"
+
+int main(int argc, char** argv) {
+    std::string test_file, ref_file;
+    double max_mean_bias = -1.0, max_p95 = -1.0;
+    bool usage_error = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--bounds" && i + 2 < argc) {
+            try {
+                max_mean_bias = std::stod(argv[++i]);
+                max_p95 = std::stod(argv[++i]);
+            } catch (const std::exception&) {
+                usage_error = true;
+            }
+            usage_error = usage_error || !(max_mean_bias >= 0.0) || !(max_p95 >= 0.0);
+        } else if (a.starts_with("--") || !ref_file.empty()) {
+            usage_error = true;
+        } else {
+            (test_file.empty() ? test_file : ref_file) = a;
+        }
+    }
+    if (usage_error || ref_file.empty()) {
+        fmt::print(stderr, "usage: candela_compare_pbrt TEST REFERENCE [--bounds MEAN P95]  (bounds as fractions, >= 0)\n");
+        return 2;
+    }
+    try {
+        const candela::Image test = candela::read_image(test_file);
+        const candela::Image ref = candela::read_image(ref_file);
+        const candela::bench::BlockComparison c = candela::bench::compare_blocks(test, ref);
+        fmt::print("mean ratio R G B: {:.4f} {:.4f} {:.4f}\n", c.mean_ratio[0], c.mean_ratio[1], c.mean_ratio[2]);
+        fmt::print("16x16-block luminance relative difference ({} of {} blocks): p50 {:.2f}%  p95 {:.2f}%  max {:.2f}%\n",
+                   c.blocks_compared, c.blocks_total, 100.0 * c.p50, 100.0 * c.p95, 100.0 * c.max);
+        if (max_mean_bias < 0.0) return 0;
+        const bool ok = candela::bench::within_bounds(c, max_mean_bias, max_p95);
+        fmt::print("{} bounds: mean {:g}, block p95 {:g}\n", ok ? "within" : "OUTSIDE", max_mean_bias, max_p95);
+        return ok ? 0 : 1;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "candela_compare_pbrt: {}\n", e.what());
+        return 2;
+    }
+}
