@@ -12,6 +12,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <regex>
 #include <string>
@@ -71,6 +72,9 @@ struct RenderArgs {
     std::optional<std::string> resume;       // a checkpoint to continue
     std::optional<std::string> checkpoint;   // where checkpoints go
     std::optional<double> checkpoint_every;  // seconds
+    std::optional<double> iso;               // the film's sensor (film/sensor.h)
+    std::optional<double> exposure_time;     // seconds
+    std::optional<double> white_balance;     // kelvin; 0 = none
 };
 
 // A flag value the user got wrong: reported like a scene error, without a file.
@@ -82,6 +86,28 @@ fs::path default_output(const fs::path& scene) {
     std::string stem = scene.stem().string();
     if (stem == "scene" && scene.has_parent_path()) stem = fs::absolute(scene).parent_path().filename().string();
     return stem + ".png";
+}
+
+// The film's sensor flags, checked as the scene file's film keys are (scene_loader.cpp).
+void apply_sensor_overrides(const RenderArgs& a, FilmSettings& film) {
+    auto positive_float = [](const char* flag, double v) {
+        if (!(v > 0) || !(v <= double(std::numeric_limits<float>::max())))
+            bad_flag(fmt::format("{}: expected a number > 0 within float range, got {}", flag, v));
+        return float(v);
+    };
+    if (a.iso) film.iso = positive_float("--iso", *a.iso);
+    if (a.exposure_time) film.exposure_time = positive_float("--exposure-time", *a.exposure_time);
+    const float ratio = imaging_ratio(film);
+    if (!(ratio > 0.0f && std::isfinite(ratio)))
+        bad_flag(fmt::format("--iso, --exposure-time: the imaging ratio exposure_time * iso / 100 = {:g} * {:g} / 100 is {}",
+                             film.exposure_time, film.iso, ratio > 0.0f ? "beyond float range" : "below float range (0)"));
+    if (a.white_balance) {
+        const double t = *a.white_balance;
+        if (!(t == 0 || (t >= double(kMinWhiteBalanceKelvin) && t <= double(std::numeric_limits<float>::max()))))
+            bad_flag(fmt::format("--white-balance: expected 0 (no white balance) or a temperature >= {} (kelvin), got {}",
+                                 kMinWhiteBalanceKelvin, t));
+        film.white_balance = float(t);
+    }
 }
 
 // An override that changes the image must also go into scene_content_hash (checkpoints).
@@ -120,6 +146,7 @@ void apply_overrides(const RenderArgs& a, Scene& scene) {
                                  names_list(sampler_type_names())));
         scene.sampler.type = *t;
     }
+    apply_sensor_overrides(a, scene.film);
 }
 
 // Render statistics as JSON, for scripts (bench/run.sh) that should not parse the summary line.
@@ -286,6 +313,11 @@ int main(int argc, char** argv) {
                            "Continue the render saved in this checkpoint up to the scene's (or --spp's) samples");
     render_cmd->add_option("--checkpoint", args.checkpoint, "Checkpoint file. Default: the first output + .ckpt");
     render_cmd->add_option("--checkpoint-every", args.checkpoint_every, "Also write the checkpoint every SECONDS");
+    render_cmd->add_option("--iso", args.iso, "Sensor sensitivity (overrides film.iso; default 100)");
+    render_cmd->add_option("--exposure-time", args.exposure_time,
+                           "Sensor exposure time in seconds (overrides film.exposure_time; default 1)");
+    render_cmd->add_option("--white-balance", args.white_balance,
+                           "Make daylight of this temperature (kelvin) white; 0 = none (overrides film.white_balance)");
 
     try {
         app.parse(argc, argv);

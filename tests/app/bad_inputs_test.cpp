@@ -173,7 +173,7 @@ const BadInput kBadInputs[] = {
      "unknown key \"renderer\"; expected one of: camera, film, integrator, lights, materials, sampler, shapes, textures"},
     {"unknown_texture.json", kUnknownName, kError, "", 3, 64, "/materials/m/albedo/texture",
      "unknown texture \"wod\"; defined textures: wood"},
-    // --- numbers: negative, zero, NaN/Inf, beyond range (37)
+    // --- numbers: negative, zero, NaN/Inf, beyond range (39)
     {"albedo_out_of_range.json", kNumber, kError, "", 3, 48, "/materials/red/albedo/1",
      "expected a number in [0, 1], got 1.2"},
     {"alpha_out_of_range.json", kNumber, kError, "", 3, 57, "/materials/leaf/alpha",
@@ -186,6 +186,8 @@ const BadInput kBadInputs[] = {
      "expected a number >= 0, got -1"},
     {"exposure_out_of_range.json", kNumber, kError, "", 2, 47, "/film/exposure",
      "expected a number in [0, 1), got 1"},
+    {"exposure_time_negative.json", kNumber, kError, "", 2, 41, "/film/exposure_time",
+     "expected a number > 0, got -0.01"},
     {"focus_distance_zero.json", kNumber, kError, "", 2, 56, "/camera/focus_distance",
      "expected a number > 0, got 0"},
     {"fov_out_of_range.json", kNumber, kError, "", 3, 12, "/camera/fov",
@@ -244,6 +246,8 @@ const BadInput kBadInputs[] = {
      "expected an integer in [1, 16777216], got 0"},
     {"thin_lens_rays_overflow.json", kNumber, kError, "", 2, 68, "/camera/focus_distance",
      "a thin lens of aperture_radius 0.1 focused at 1e+37 gives rays beyond float range"},
+    {"white_balance_too_low.json", kNumber, kError, "", 2, 48, "/film/white_balance",
+     "expected 0 (no white balance) or a temperature >= 1000 (kelvin), got 500"},
     {"zero_rotation_axis.json", kNumber, kError, "", 4, 40, "/lights/0/transform/0/rotate/axis",
      "expected a nonzero rotation axis, got [0, 0, 0]"},
     {"zero_scale.json", kNumber, kError, "", 6, 60, "/shapes/0/transform/1/scale/1",

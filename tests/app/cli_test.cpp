@@ -65,8 +65,23 @@ TEST(Cli, BadFlagsExitTwo) {
     EXPECT_EQ(run_candela("render " + kScene + " --integrator magic").exit_code, 2);
     EXPECT_EQ(run_candela("render " + kScene + " --spp 0").exit_code, 2);
     EXPECT_EQ(run_candela("render " + kScene + " -o out.tiff").exit_code, 2);
+    EXPECT_EQ(run_candela("render " + kScene + " --iso 0").exit_code, 2);
+    EXPECT_EQ(run_candela("render " + kScene + " --exposure-time -1").exit_code, 2);
+    EXPECT_EQ(run_candela("render " + kScene + " --iso 1e38 --exposure-time 1e3").exit_code, 2);
     EXPECT_EQ(run_candela("render /no/such/scene.json").exit_code, 2);
     EXPECT_EQ(run_candela("render").exit_code, 2);
+}
+
+TEST(Cli, SensorFlagsAreCheckedAsTheFilmKeys) {
+    CliResult r = run_candela("render " + kScene + " --white-balance 500");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output,
+              "candela: error: --white-balance: expected 0 (no white balance) or a temperature >= 1000 (kelvin), got 500\n");
+    r = run_candela("render " + kScene + " --iso -200");
+    EXPECT_EQ(r.output, "candela: error: --iso: expected a number > 0 within float range, got -200\n");
+    CliResult h = run_candela("render --help");
+    for (const char* flag : {"--iso", "--exposure-time", "--white-balance"})
+        EXPECT_NE(h.output.find(flag), std::string::npos) << flag;
 }
 
 TEST(Cli, BsdfIntegratorFlagRefusesDeltaLights) {

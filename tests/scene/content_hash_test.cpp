@@ -109,6 +109,15 @@ TEST_F(ContentHash, ChangesWithEachCommandLineOverride) {
     s = loaded;
     s.sampler.type = loaded.sampler.type == SamplerType::kSobol ? SamplerType::kIndependent : SamplerType::kSobol;
     EXPECT_NE(scene_content_hash(s), before);  // --sampler
+    s = loaded;
+    s.film.iso = 200;  // --iso
+    EXPECT_NE(scene_content_hash(s), before);
+    s = loaded;
+    s.film.exposure_time = 0.5f;  // --exposure-time
+    EXPECT_NE(scene_content_hash(s), before);
+    s = loaded;
+    s.film.white_balance = 5000;  // --white-balance
+    EXPECT_NE(scene_content_hash(s), before);
 }
 
 }  // namespace

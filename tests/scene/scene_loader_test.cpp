@@ -39,6 +39,9 @@ TEST(SceneLoader, EmptySceneHasTheDocumentedDefaults) {
     EXPECT_EQ(s.film.exposure, 0.5f);
     EXPECT_EQ(s.film.transfer, Transfer::kSrgb);
     EXPECT_EQ(s.film.gamma, 2.2f);
+    EXPECT_EQ(s.film.iso, 100.0f);
+    EXPECT_EQ(s.film.exposure_time, 1.0f);
+    EXPECT_EQ(s.film.white_balance, 0.0f);
     EXPECT_TRUE(s.materials.empty());
     EXPECT_TRUE(s.shapes.empty());
     EXPECT_FALSE(s.environment);
@@ -201,6 +204,38 @@ TEST(SceneLoaderFilm, TransferAndGammaAreRead) {
     EXPECT_EQ(load_error(R"({"film": {"gamma": 0}})").message(), "expected a number > 0, got 0");
 }
 
+TEST(SceneLoaderFilm, IsoIsRead) {
+    EXPECT_EQ(load_json(R"({"film": {"iso": 400}})").film.iso, 400.0f);
+    EXPECT_EQ(imaging_ratio(load_json(R"({"film": {"iso": 400}})").film), 4.0f);
+    EXPECT_EQ(load_error(R"({"film": {"iso": 0}})").message(), "expected a number > 0, got 0");
+    EXPECT_EQ(load_error(R"({"film": {"iso": -100}})").message(), "expected a number > 0, got -100");
+}
+
+TEST(SceneLoaderFilm, ExposureTimeIsRead) {
+    Scene s = load_json(R"({"film": {"exposure_time": 0.25, "iso": 200}})");
+    EXPECT_EQ(s.film.exposure_time, 0.25f);
+    EXPECT_EQ(imaging_ratio(s.film), 0.5f);
+    EXPECT_EQ(load_error(R"({"film": {"exposure_time": 0}})").message(), "expected a number > 0, got 0");
+}
+
+TEST(SceneLoaderFilm, ImagingRatioMustStayAPositiveFloat) {
+    SceneError e = load_error(R"({"film": {"iso": 1e38, "exposure_time": 1e10}})");
+    EXPECT_EQ(e.message(), "the imaging ratio exposure_time * iso / 100 = 1e+10 * 1e+38 / 100 is beyond float range");
+    EXPECT_EQ(e.where().json_pointer, "/film/exposure_time");
+    EXPECT_EQ(load_error(R"({"film": {"iso": 1e-30, "exposure_time": 1e-30}})").message(),
+              "the imaging ratio exposure_time * iso / 100 = 1e-30 * 1e-30 / 100 is below float range (0)");
+}
+
+TEST(SceneLoaderFilm, WhiteBalanceIsRead) {
+    EXPECT_EQ(load_json(R"({"film": {"white_balance": 5000}})").film.white_balance, 5000.0f);
+    EXPECT_EQ(load_json(R"({"film": {"white_balance": 1000}})").film.white_balance, 1000.0f);
+    EXPECT_EQ(load_json(R"({"film": {"white_balance": 0}})").film.white_balance, 0.0f);
+    EXPECT_EQ(load_error(R"({"film": {"white_balance": 999}})").message(),
+              "expected 0 (no white balance) or a temperature >= 1000 (kelvin), got 999");
+    EXPECT_EQ(load_error(R"({"film": {"white_balance": 999}})").where().json_pointer, "/film/white_balance");
+    EXPECT_EQ(load_error(R"({"film": {"white_balance": -5000}})").message(), "expected a number >= 0, got -5000");
+}
+
 // ---- unknown keys
 
 TEST(SceneLoader, UnknownKeysInEverySectionAreErrors) {
@@ -212,8 +247,9 @@ TEST(SceneLoader, UnknownKeysInEverySectionAreErrors) {
               "unknown key \"lookat\" (did you mean \"look_at\"?)");
     EXPECT_EQ(load_error(R"({"film": {"tone_map": "aces"}})").message(),
               "unknown key \"tone_map\" (did you mean \"tonemap\"?)");
-    EXPECT_EQ(load_error(R"({"film": {"iso": 100}})").message(),
-              "unknown key \"iso\"; expected one of: exposure, filter, gamma, tonemap, transfer");
+    EXPECT_EQ(load_error(R"({"film": {"sensor": "cie1931"}})").message(),
+              "unknown key \"sensor\"; expected one of: exposure, exposure_time, filter, gamma, iso, tonemap, "
+              "transfer, white_balance");
     // A misspelt section is reported before anything that depends on it.
     SceneError e = load_error(R"({"shapes": [{"type": "sphere", "center": [0, 0, 0],
                                               "radius": 1, "material": "m"}],
@@ -235,6 +271,9 @@ TEST(SceneLoader, LoadsEverySectionFromAFile) {
     EXPECT_EQ(s.camera.height, 24);
     EXPECT_EQ(s.film.filter, FilterType::kTent);
     EXPECT_EQ(s.film.transfer, Transfer::kGamma);
+    EXPECT_EQ(s.film.iso, 200.0f);
+    EXPECT_EQ(s.film.exposure_time, 0.5f);
+    EXPECT_EQ(s.film.white_balance, 5500.0f);
     ASSERT_EQ(s.material_names, (std::vector<std::string>{"white", "mirror", "glass", "gold", "foil",
                                                           "frosted", "pane", "copper"}));
     // Inputs first: picture before checks, the inline constant before worn.

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <bit>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -83,6 +84,9 @@ uint64_t scene_content_hash(std::string_view json_text, const Scene& scene) {
     hash.add_field(integrator_type_name(scene.integrator.type));
     hash.add_field(sampler_type_name(scene.sampler.type));
     hash.add_u64(scene.sampler.seed);
+    // The sensor (--iso, --exposure-time, --white-balance): spectral mode applies it per sample.
+    for (float v : {scene.film.iso, scene.film.exposure_time, scene.film.white_balance})
+        hash.add_u64(std::bit_cast<uint32_t>(v));
     return hash.value();
 }
 

@@ -9,8 +9,8 @@
 //  - the bytes of every file the scene names (each string under a "file" key: meshes,
 //    environment images), resolved against the scene's folder as the loader resolves them;
 //  - the settings the command line can override, as `scene` holds them after the overrides:
-//    resolution, integrator, sampler type and seed. (A new override that changes the image must
-//    be added here.)
+//    resolution, integrator, sampler type and seed, the film's iso, exposure_time and
+//    white_balance. (A new override that changes the image must be added here.)
 #include <cstdint>
 #include <string_view>
 

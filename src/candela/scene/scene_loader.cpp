@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <system_error>
 
@@ -170,6 +171,29 @@ void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget& budget) {
     check_camera_extent(camera, c);
 }
 
+// The sensor's keys (film/sensor.h): iso and exposure_time give the imaging ratio, which must
+// stay a positive float; white_balance is 0 or a temperature.
+void read_sensor(JsonCursor& c, FilmSettings& film) {
+    std::optional<JsonCursor> last;  // where an imaging ratio out of float range is reported
+    if (auto v = c.get("iso")) {
+        film.iso = v->number_f(Bounds::above(0));
+        last = v;
+    }
+    if (auto v = c.get("exposure_time")) {
+        film.exposure_time = v->number_f(Bounds::above(0));
+        last = v;
+    }
+    const float ratio = imaging_ratio(film);
+    if (last && !(ratio > 0.0f && std::isfinite(ratio)))
+        last->fail(fmt::format("the imaging ratio exposure_time * iso / 100 = {:g} * {:g} / 100 is {}", film.exposure_time,
+                               film.iso, ratio > 0.0f ? "beyond float range" : "below float range (0)"));
+    if (auto v = c.get("white_balance")) {
+        film.white_balance = v->number_f(Bounds::at_least(0));
+        if (film.white_balance != 0.0f && film.white_balance < kMinWhiteBalanceKelvin)
+            v->fail_expected(fmt::format("0 (no white balance) or a temperature >= {} (kelvin)", kMinWhiteBalanceKelvin));
+    }
+}
+
 void read_film(JsonCursor c, FilmSettings& film) {
     if (auto v = c.get("filter"))
         film.filter = *parse_filter_type(v->choice("filter", filter_type_names()));
@@ -179,6 +203,7 @@ void read_film(JsonCursor c, FilmSettings& film) {
     if (auto v = c.get("transfer"))
         film.transfer = *parse_transfer(v->choice("transfer", transfer_names()));
     if (auto v = c.get("gamma")) film.gamma = v->number_f(Bounds::above(0));
+    read_sensor(c, film);
     c.reject_unknown_keys();
 }
 

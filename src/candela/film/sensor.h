@@ -1,0 +1,99 @@
+#pragma once
+// The sensor: how a camera sample's radiance becomes a linear sRGB pixel value (pbrt-v4's
+// PixelSensor with its default "cie1931" response, and RGBFilm's output matrix).
+//
+// Spectral mode: a path returns L, its radiance at four wavelengths drawn with pdfs p_i. The
+// sensor integrates L against the CIE 1931 matching functions by the Monte Carlo estimate
+//     XYZ = imaging_ratio * (1/4) sum_i cie_bar(lambda_i) L_i / p_i / kCieYIntegral
+// (pbrt-v4's ToSensorRGB; a terminated secondary wavelength has p_i = 0 and adds nothing), and
+// maps XYZ to linear sRGB through the white balance: rgb = rgb_from_xyz * white_balance * XYZ.
+// Dividing by the integral of y-bar is candela's normalization: an RGB emitter's spectrum is its
+// illuminant uplift times D65 scaled to Y = 1 (spectrum/dense_spectrum.h), so an emitter of RGB
+// (1, 1, 1) seen directly is pixel (1, 1, 1) in expectation, as in RGB mode. (pbrt-v4 divides
+// each light by its photometric integral instead; the image is the same.)
+//
+// RGB mode: the path's RGB is already linear sRGB; the sensor only applies the imaging ratio and
+// the white balance, and with the defaults returns its argument untouched, so RGB images do not
+// change by a bit.
+//
+// A Sensor is built once per render (make_sensor) and used per camera sample.
+#include <cmath>
+
+#include "candela/core/platform.h"
+#include "candela/film/film_settings.h"
+#include "candela/math/color.h"
+#include "candela/math/rgb.h"
+#include "candela/math/vec.h"
+#include "candela/spectrum/cie_tables.h"
+#include "candela/spectrum/color_space.h"
+#include "candela/spectrum/sampled_wavelengths.h"
+
+namespace candela {
+
+// A 3x3 float matrix applied to an Rgb (row-major): the sensor's precomputed colour maps.
+struct SensorMatrix {
+    float m[3][3] = {};
+    CANDELA_HD Rgb operator*(const Rgb& v) const {
+        return Rgb(m[0][0] * v.r + m[0][1] * v.g + m[0][2] * v.b, m[1][0] * v.r + m[1][1] * v.g + m[1][2] * v.b,
+                   m[2][0] * v.r + m[2][1] * v.g + m[2][2] * v.b);
+    }
+};
+
+class Sensor {
+  public:
+    // pbrt-v4's default sensor: imaging ratio 1, no white balance.
+    Sensor() : Sensor(1.0f, 0.0f) {}
+    // imaging_ratio > 0 and finite; white_balance_kelvin 0 (none) or >= 1000.
+    Sensor(float imaging_ratio, float white_balance_kelvin);
+
+    // Spectral mode: the linear sRGB value of a camera sample of radiance L at wavelengths w.
+    CANDELA_HD Rgb spectral_to_rgb(const Color& L, const SampledWavelengths& w) const {
+        // Sum over the four wavelengths of cie_bar * L / p, as XYZ; 1/4, 1/kCieYIntegral, the
+        // imaging ratio and the white balance are all in the one matrix.
+        Rgb xyz;
+        for (int i = 0; i < kColorChannels; ++i) {
+            if (w.pdf[i] == 0.0f) continue;  // a terminated secondary wavelength
+            // The nearest tabulated nm, as DenseSpectrum's lookup: lambda + 0.5 truncated is
+            // lround for the positive wavelengths the sampler makes.
+            const int n = int(w.lambda[i] + 0.5f) - int(kCieLambdaMin);
+            if (n < 0 || n >= kCieSamples) continue;
+            const float weight = L[i] / w.pdf[i];
+            xyz += Rgb(kCieX[n], kCieY[n], kCieZ[n]) * weight;
+        }
+        return rgb_from_xyz_sum_ * xyz;
+    }
+
+    // RGB mode: the path's linear sRGB with the imaging ratio and the white balance applied;
+    // exactly `rgb` (the same bits) when the ratio is 1 and there is no white balance.
+    CANDELA_HD Rgb rgb_to_rgb(const Rgb& rgb) const {
+        if (!white_balanced_) return imaging_ratio_ == 1.0f ? rgb : rgb * imaging_ratio_;
+        return rgb_from_rgb_ * rgb;
+    }
+
+    CANDELA_HD float imaging_ratio() const { return imaging_ratio_; }
+    CANDELA_HD bool white_balanced() const { return white_balanced_; }
+
+  private:
+    float imaging_ratio_ = 1.0f;
+    bool white_balanced_ = false;
+    // rgb_from_xyz * white balance * imaging_ratio / (4 kCieYIntegral): from the summed XYZ.
+    SensorMatrix rgb_from_xyz_sum_;
+    // rgb_from_xyz * white balance * xyz_from_rgb * imaging_ratio: RGB mode with white balance.
+    SensorMatrix rgb_from_rgb_;
+};
+
+// The sensor of a render's film settings (iso, exposure_time, white_balance).
+Sensor make_sensor(const FilmSettings& film);
+
+// The chromaticity the white balance adapts from, for a white_balance of `kelvin`: the CIE
+// daylight illuminant at that temperature, as pbrt-v4's Spectra::D (the temperature is first
+// scaled by 1.4388 / 1.4380, the change of the second radiation constant c2 since the D series
+// was defined, so 6500 is D65's 6504 K; below 4000 K the D series is undefined and a blackbody
+// stands in).
+Vec2<double> white_balance_source_xy(float kelvin);
+
+// pbrt-v4's WhiteBalance: the von Kries adaptation in the Bradford cone space (LMS) that takes
+// the white of chromaticity `from` to the white of chromaticity `to`, as a matrix on XYZ.
+Matrix3d white_balance_matrix(Vec2<double> from, Vec2<double> to);
+
+}  // namespace candela
