@@ -30,12 +30,12 @@
 
 namespace candela {
 
-// A 3x3 float matrix applied to an Rgb (row-major): the sensor's precomputed colour maps.
+// A 3x3 float matrix (row-major) giving linear sRGB: the sensor's precomputed colour maps.
 struct SensorMatrix {
     float m[3][3] = {};
-    CANDELA_HD Rgb operator*(const Rgb& v) const {
-        return Rgb(m[0][0] * v.r + m[0][1] * v.g + m[0][2] * v.b, m[1][0] * v.r + m[1][1] * v.g + m[1][2] * v.b,
-                   m[2][0] * v.r + m[2][1] * v.g + m[2][2] * v.b);
+    CANDELA_HD Rgb operator*(const Vec3f& v) const {
+        return Rgb(m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+                   m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z);
     }
 };
 
@@ -50,7 +50,7 @@ class Sensor {
     CANDELA_HD Rgb spectral_to_rgb(const Color& L, const SampledWavelengths& w) const {
         // Sum over the four wavelengths of cie_bar * L / p, as XYZ; 1/4, 1/kCieYIntegral, the
         // imaging ratio and the white balance are all in the one matrix.
-        Rgb xyz;
+        Vec3f xyz;
         for (int i = 0; i < kColorChannels; ++i) {
             if (w.pdf[i] == 0.0f) continue;  // a terminated secondary wavelength
             // The nearest tabulated nm, as DenseSpectrum's lookup: lambda + 0.5 truncated is
@@ -58,7 +58,7 @@ class Sensor {
             const int n = int(w.lambda[i] + 0.5f) - int(kCieLambdaMin);
             if (n < 0 || n >= kCieSamples) continue;
             const float weight = L[i] / w.pdf[i];
-            xyz += Rgb(kCieX[n], kCieY[n], kCieZ[n]) * weight;
+            xyz += Vec3f(kCieX[n], kCieY[n], kCieZ[n]) * weight;
         }
         return rgb_from_xyz_sum_ * xyz;
     }
@@ -67,7 +67,7 @@ class Sensor {
     // exactly `rgb` (the same bits) when the ratio is 1 and there is no white balance.
     CANDELA_HD Rgb rgb_to_rgb(const Rgb& rgb) const {
         if (!white_balanced_) return imaging_ratio_ == 1.0f ? rgb : rgb * imaging_ratio_;
-        return rgb_from_rgb_ * rgb;
+        return rgb_from_rgb_ * Vec3f(rgb.r, rgb.g, rgb.b);
     }
 
     CANDELA_HD float imaging_ratio() const { return imaging_ratio_; }
