@@ -1,6 +1,7 @@
 #include "candela/film/sensor.h"
 
 #include "candela/core/check.h"
+#include "candela/spectrum/blackbody.h"
 #include "candela/spectrum/dense_spectrum.h"
 
 namespace candela {
@@ -37,40 +38,12 @@ Vec2<double> xy_of_xyz(const Vec3d& xyz) {
     return {xyz.x / sum, xyz.y / sum};
 }
 
-// Planck's law up to a constant factor, at lambda nm and T kelvin: lambda^-5 / (e^(c2 / lambda T) - 1),
-// with the second radiation constant c2 = hc / k_B in nm K (CODATA, as pbrt-v4's Blackbody).
-double planck_shape(double lambda_nm, double kelvin) {
-    constexpr double kC2 = 1.438776877e7;
-    return 1.0 / (std::pow(lambda_nm, 5.0) * std::expm1(kC2 / (lambda_nm * kelvin)));
-}
-
 }  // namespace
 
 Vec2<double> white_balance_source_xy(float kelvin) {
-    // pbrt-v4's Spectra::D: the nominal temperature to the correlated colour temperature on the
-    // current c2 scale (CIE 15:2004, 3.1: the D series was defined with c2 = 1.4380e-2 m K).
-    const double cct = double(kelvin) * 1.4388 / 1.4380;
-    if (cct < 4000.0) {
-        // The CIE daylight formulas start at 4000 K; below, pbrt-v4 uses a blackbody. Its
-        // chromaticity as the sensor sees it: Planck's law at every tabulated nm, through the
-        // same sums as every other spectrum's XYZ.
-        // Normalized to 1 at Wien's peak (as pbrt-v4's BlackbodySpectrum) to stay in float range.
-        const double peak = planck_shape(2.897771955e6 / cct, cct);
-        DenseSpectrum b;
-        for (int i = 0; i < kDenseSamples; ++i) b.v[size_t(i)] = float(planck_shape(kDenseLambdaMin + i, cct) / peak);
-        return xy_of_xyz(spectrum_to_xyz(b));
-    }
-    // The chromaticity of CIE daylight at cct (CIE 15:2004, equations 3.3 and 3.4). pbrt-v4
-    // integrates the D-series spectrum (S0 + M1 S1 + M2 S2, whose M1, M2 come from this same x_D,
-    // y_D) against the matching functions instead; the two differ only by the rounding of the
-    // 10-nm S tables and the 1-nm matching functions, about 1e-4 in x and y. The spectrum is
-    // spectrum/blackbody.h's cie_daylight (another branch); when it lands, its spectrum_to_xyz
-    // may replace this.
-    const double t = 1.0 / cct;
-    const double x = cct <= 7000.0 ? ((-4.6070e9 * t + 2.9678e6) * t + 0.09911e3) * t + 0.244063
-                                   : ((-2.0064e9 * t + 1.9018e6) * t + 0.24748e3) * t + 0.237040;
-    const double y = -3.0 * x * x + 2.870 * x - 0.275;
-    return {x, y};
+    // pbrt-v4's PixelSensor: the xy of the D-series spectrum (a blackbody below 4000 K), through
+    // the same sums as every other spectrum's XYZ.
+    return xy_of_xyz(spectrum_to_xyz(cie_daylight(kelvin)));
 }
 
 Matrix3d white_balance_matrix(Vec2<double> from, Vec2<double> to) {

@@ -85,11 +85,10 @@ class Sensor {
 // The sensor of a render's film settings (iso, exposure_time, white_balance).
 Sensor make_sensor(const FilmSettings& film);
 
-// The chromaticity the white balance adapts from, for a white_balance of `kelvin`: the CIE
-// daylight illuminant at that temperature, as pbrt-v4's Spectra::D (the temperature is first
-// scaled by 1.4388 / 1.4380, the change of the second radiation constant c2 since the D series
-// was defined, so 6500 is D65's 6504 K; below 4000 K the D series is undefined and a blackbody
-// stands in).
+// The chromaticity the white balance adapts from, for a white_balance of `kelvin`: that of the
+// CIE daylight illuminant cie_daylight(kelvin) (spectrum/blackbody.h, pbrt-v4's Spectra::D: the
+// temperature is first scaled by 1.4388 / 1.4380, so 6500 is D65's 6504 K; below 4000 K, where
+// the D series is undefined, a blackbody stands in).
 Vec2<double> white_balance_source_xy(float kelvin);
 
 // pbrt-v4's WhiteBalance: the von Kries adaptation in the Bradford cone space (LMS) that takes
