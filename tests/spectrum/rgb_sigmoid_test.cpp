@@ -39,7 +39,7 @@ TEST(RgbSigmoid, MatchesTheClosedFormWithTheTailsRelativePrecision) {
     // it would keep no correct digit of s = 2.5e-7).
     auto check = [](float x) {
         const double expected = sigmoid_reference(double(x));
-        const double got = rgb_sigmoid_s(x);
+        const double got = double(rgb_sigmoid_s(x));
         EXPECT_NEAR(got, expected, 2e-7) << "x = " << x;
         if (x < 0.0f) {
             EXPECT_NEAR(got / expected, 1.0, 1e-6) << "x = " << x;
@@ -66,7 +66,7 @@ TEST(RgbSigmoid, IncreasesMonotonicallyWithinZeroOne) {
 TEST(RgbSigmoid, IsTheSigmoidOfTheQuadraticInNanometres) {
     const RgbSigmoid s{-1.2e-4f, 0.131f, -35.0f};
     for (float lambda = 360.0f; lambda <= 830.0f; lambda += 1.0f) {
-        const double l = lambda;
+        const double l = double(lambda);
         const double x = double(s.c0) * l * l + double(s.c1) * l + double(s.c2);
         EXPECT_NEAR(s(lambda), sigmoid_reference(x), 1e-5) << lambda;
     }

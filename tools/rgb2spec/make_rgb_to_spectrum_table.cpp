@@ -88,7 +88,7 @@ Table compute_table(int res) {
     const RgbSigmoidFit fit;
     parallel_for(3 * res * res, [&](int column) {
         const int slice = column / (res * res), j = column / res % res, i = column % res;
-        const double x = table.nodes[size_t(i)], y = table.nodes[size_t(j)];
+        const double x = double(table.nodes[size_t(i)]), y = double(table.nodes[size_t(j)]);
         auto store = [&](int k, const SigmoidCoefficients& normalized, double residual) {
             const size_t node = (size_t(slice * res + k) * size_t(res) + size_t(j)) * size_t(res) + size_t(i);
             const RgbSigmoid s = sigmoid_in_nm(normalized);
@@ -98,7 +98,7 @@ Table compute_table(int res) {
             table.residuals[node] = residual;
         };
         auto solve = [&](int k, SigmoidCoefficients& c) {
-            const double z = table.nodes[size_t(k)];
+            const double z = double(table.nodes[size_t(k)]);
             if (i == res - 1 && j == res - 1) {
                 // The grey axis, exactly: c = (0, 0, (z - 1/2) / sqrt(z (1 - z))), normalized.
                 c = z > 0.0 && z < 1.0 ? SigmoidCoefficients(0.0, 0.0, (z - 0.5) / std::sqrt(z * (1.0 - z)))
@@ -142,7 +142,7 @@ double round_trip_error(const RgbToSpectrumTable& table, const Rgb& rgb) {
     DenseSpectrum lit;
     for (int i = 0; i < kDenseSamples; ++i) lit.v[size_t(i)] = s(float(kDenseLambdaMin + i)) * d65.v[size_t(i)];
     const Rgb back = xyz_to_linear_srgb(spectrum_to_xyz(lit));
-    return std::max({std::abs(back.r - rgb.r), std::abs(back.g - rgb.g), std::abs(back.b - rgb.b)});
+    return double(std::max({std::abs(back.r - rgb.r), std::abs(back.g - rgb.g), std::abs(back.b - rgb.b)}));
 }
 
 // The worst round trip over the colours colour(i), i in [0, n), and how many exceed 1e-3.
@@ -179,7 +179,7 @@ void check(const Table& table) {
                 *std::max_element(table.residuals.begin(), table.residuals.end()), table.largest_coefficient);
     report_worst("round trip at the nodes", table, 3 * res * res * res, [&](int n) {
         const int slice = n / (res * res * res), k = n / (res * res) % res, j = n / res % res, i = n % res;
-        const double z = table.nodes[size_t(k)];
+        const double z = double(table.nodes[size_t(k)]);
         float v[3];
         v[slice] = float(z);
         v[(slice + 1) % 3] = float(double(table.nodes[size_t(i)]) * z);

@@ -78,7 +78,7 @@ RgbSigmoidFit::RgbSigmoidFit() {
     const DenseSpectrum &x = cie_x_bar(), &y = cie_y_bar(), &z = cie_z_bar();
     for (int i = 0; i < kDenseSamples; ++i) {
         const double w = double(d65.v[size_t(i)]) / double(kCieYIntegral);
-        weight_[size_t(i)] = Vec3d(x.v[size_t(i)], y.v[size_t(i)], z.v[size_t(i)]) * w;
+        weight_[size_t(i)] = Vec3d(double(x.v[size_t(i)]), double(y.v[size_t(i)]), double(z.v[size_t(i)])) * w;
     }
     white_ = srgb_color_space().white_xyz;
 }
