@@ -43,10 +43,10 @@
 #include <thread>
 #include <vector>
 
-#include "candela/spectrum/color_space.h"
 #include "candela/spectrum/dense_spectrum.h"
 #include "candela/spectrum/rgb_sigmoid_fit.h"
 #include "candela/spectrum/rgb_to_spectrum_table.h"
+#include "candela/spectrum/spectrum_rgb.h"
 
 namespace candela {
 namespace {
@@ -138,10 +138,9 @@ Table compute_table(int res) {
 // The largest channel error of the round trip of rgb through the table.
 double round_trip_error(const RgbToSpectrumTable& table, const Rgb& rgb) {
     const RgbSigmoid s = table(rgb);
-    const DenseSpectrum& d65 = d65_illuminant();
-    DenseSpectrum lit;
-    for (int i = 0; i < kDenseSamples; ++i) lit.v[size_t(i)] = s(float(kDenseLambdaMin + i)) * d65.v[size_t(i)];
-    const Rgb back = xyz_to_linear_srgb(spectrum_to_xyz(lit));
+    DenseSpectrum reflectance;
+    for (int i = 0; i < kDenseSamples; ++i) reflectance.v[size_t(i)] = s(float(kDenseLambdaMin + i));
+    const Rgb back = reflectance_rgb(reflectance);
     return double(std::max({std::abs(back.r - rgb.r), std::abs(back.g - rgb.g), std::abs(back.b - rgb.b)}));
 }
 
