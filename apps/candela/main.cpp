@@ -66,6 +66,8 @@ struct RenderArgs {
     std::optional<std::string> resolution;
     std::optional<std::string> integrator;
     std::optional<std::string> sampler;
+    bool spectral = false;  // --spectral
+    bool rgb = false;       // --rgb
     std::optional<std::string> stats;
     std::optional<std::string> memory_limit;  // e.g. "8G"; default: what the process can have
     std::optional<double> time_limit;        // seconds
@@ -139,6 +141,9 @@ void apply_overrides(const RenderArgs& a, Scene& scene) {
             bad_flag("--integrator bsdf: the bsdf integrator finds light only by hitting it, so it cannot see the "
                      "scene's point, spot or directional lights (they have no area); use path or whitted");
     }
+    if (a.spectral && a.rgb) bad_flag("--spectral and --rgb: choose one transport mode");
+    if (a.spectral) scene.integrator.spectral = true;
+    if (a.rgb) scene.integrator.spectral = false;
     if (a.sampler) {
         std::optional<SamplerType> t = parse_sampler_type(*a.sampler);
         if (!t)
@@ -307,6 +312,9 @@ int main(int argc, char** argv) {
                            std::string("Sampler (overrides sampler.type): ") + names_list(sampler_type_names()));
     render_cmd->add_option("--integrator", args.integrator,
                            std::string("Integrator (overrides integrator.type): ") + names_list(integrator_type_names()));
+    render_cmd->add_flag("--spectral", args.spectral,
+                         "Transport four wavelengths per path, as pbrt-v4 (overrides integrator.spectral)");
+    render_cmd->add_flag("--rgb", args.rgb, "Transport RGB (overrides integrator.spectral; the default for JSON scenes)");
     render_cmd->add_option("--time-limit", args.time_limit,
                            "Stop rendering after SECONDS (at a pass boundary); write the image and a checkpoint");
     render_cmd->add_option("--resume", args.resume,

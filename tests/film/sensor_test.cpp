@@ -127,8 +127,8 @@ TEST(Sensor, D65AtEveryNanometreIsExactlyTheWhiteOfSrgb) {
     for (int first = kDenseLambdaMin; first <= kDenseLambdaMax; first += kColorChannels) {
         SampledWavelengths w;
         for (int i = 0; i < kColorChannels; ++i) {
-            w.lambda[i] = float(first + i);
-            w.pdf[i] = first + i <= kDenseLambdaMax ? 0.25f : 0.0f;
+            w.lambda.set(i, float(first + i));
+            w.pdf.set(i, first + i <= kDenseLambdaMax ? 0.25f : 0.0f);
         }
         const Vec3d rgb = to_vec(sensor.spectral_to_rgb(d65.eval(w.lambda), w));
         sum += rgb;

@@ -48,6 +48,27 @@ TEST_P(Determinism, SameImageForAnyThreadCountAndTileSize) {
     EXPECT_FALSE(bit_identical(one, other));
 }
 
+// Spectral mode: the wavelengths come from the sampler's own numbers, so the image is still a
+// function of the scene, sampler, spp and seed; and it is not the RGB mode's image.
+TEST(DeterminismSpectral, SameImageForAnyThreadCountAndTileSize) {
+    for (IntegratorType type : {IntegratorType::kPath, IntegratorType::kBsdf, IntegratorType::kWhitted}) {
+        SCOPED_TRACE(std::string(integrator_type_name(type)));
+        Scene scene = test::lit_small_box_scene(37, 23, 8);
+        scene.integrator.type = type;
+        scene.integrator.spectral = true;
+        Image one = render(scene, {.threads = 1, .tile_size = 16}).image;
+        Image two = render(scene, {.threads = 2, .tile_size = 16}).image;
+        Image small_tiles = render(scene, {.threads = 2, .tile_size = 5}).image;
+        float brightest = 0.0f;
+        for (const Rgb& p : one.pixels) brightest = std::max(brightest, p.max_component());
+        EXPECT_GT(brightest, 0.0f);
+        EXPECT_TRUE(bit_identical(one, two));
+        EXPECT_TRUE(bit_identical(one, small_tiles));
+        scene.integrator.spectral = false;
+        EXPECT_FALSE(bit_identical(one, render(scene, {.threads = 2, .tile_size = 16}).image));
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllDebugIntegrators, Determinism,
                          ::testing::Values(std::pair{IntegratorType::kAo, FilterType::kBox},
                                            std::pair{IntegratorType::kNormals, FilterType::kTent},

@@ -25,6 +25,9 @@ struct FurnaceCase {
     bool mis;
     float albedo;
     float rr_probability;  // 0: survival by throughput
+    bool spectral = false;  // transport four wavelengths: grey albedo and a white (D65) emitter
+                            // give every wavelength the same answer, which the sensor maps to
+                            // the same pixel value as in RGB mode
 };
 
 constexpr int kSize = 32;        // pixels per side; square, so the whole image is one block
@@ -61,6 +64,7 @@ Scene furnace_scene(const FurnaceCase& c) {
     s.integrator.mis = c.mis;
     s.integrator.max_depth = kMaxDepth;
     s.integrator.rr_probability = c.rr_probability;
+    s.integrator.spectral = c.spectral;
     return s;
 }
 
@@ -120,7 +124,10 @@ INSTANTIATE_TEST_SUITE_P(
                       FurnaceCase{"sphere_bsdf_a05_rr08", Enclosure::kSphere, IntegratorType::kBsdf, true, 0.5f, 0.8f},
                       FurnaceCase{"sphere_bsdf_a08_rr08", Enclosure::kSphere, IntegratorType::kBsdf, true, 0.8f, 0.8f},
                       FurnaceCase{"cube_path_a08", Enclosure::kCube, IntegratorType::kPath, true, 0.8f, 0.0f},
-                      FurnaceCase{"cube_path_a05_rr08", Enclosure::kCube, IntegratorType::kPath, true, 0.5f, 0.8f}),
+                      FurnaceCase{"cube_path_a05_rr08", Enclosure::kCube, IntegratorType::kPath, true, 0.5f, 0.8f},
+                      FurnaceCase{"sphere_path_a08_spectral", Enclosure::kSphere, IntegratorType::kPath, true, 0.8f, 0.0f, true},
+                      FurnaceCase{"sphere_bsdf_a05_spectral", Enclosure::kSphere, IntegratorType::kBsdf, true, 0.5f, 0.0f, true},
+                      FurnaceCase{"cube_path_a08_spectral", Enclosure::kCube, IntegratorType::kPath, true, 0.8f, 0.0f, true}),
     [](const auto& param_info) { return param_info.param.name; });
 
 }  // namespace

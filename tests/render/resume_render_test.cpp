@@ -48,26 +48,27 @@ RenderOptions stop_after_passes(int k, uint32_t pass_spp, int threads, int& pass
     return o;
 }
 
-Scene lit_scene(IntegratorType integrator, SamplerType sampler, int spp) {
+Scene lit_scene(IntegratorType integrator, SamplerType sampler, int spp, bool spectral = false) {
     // Not a multiple of the tile size; a light, a mirror and indirect light, so every branch of
     // the transport integrators runs.
     Scene s = test::lit_small_box_scene(37, 23, spp);
     s.integrator.type = integrator;
+    s.integrator.spectral = spectral;
     s.sampler.type = sampler;
     return s;
 }
 
-using Param = std::tuple<IntegratorType, SamplerType>;
+using Param = std::tuple<IntegratorType, SamplerType, bool>;  // bool: spectral mode
 
 class Resume : public ::testing::TestWithParam<Param> {};
 
 std::string param_name(const ::testing::TestParamInfo<Param>& info) {
     return std::string(integrator_type_name(std::get<0>(info.param))) + "_" +
-           std::string(sampler_type_name(std::get<1>(info.param)));
+           std::string(sampler_type_name(std::get<1>(info.param))) + (std::get<2>(info.param) ? "_spectral" : "");
 }
 
 TEST_P(Resume, StoppedAfterAnyPassAndResumedIsBitIdentical) {
-    const Scene scene = lit_scene(std::get<0>(GetParam()), std::get<1>(GetParam()), 12);
+    const Scene scene = lit_scene(std::get<0>(GetParam()), std::get<1>(GetParam()), 12, std::get<2>(GetParam()));
     const RenderResult reference = render(scene, {.threads = 2});
     ASSERT_EQ(reference.state.samples_done, 12u);
     float brightest = 0.0f;  // a black image would be trivially identical
@@ -103,7 +104,7 @@ TEST_P(Resume, StoppedAfterAnyPassAndResumedIsBitIdentical) {
 }
 
 TEST_P(Resume, ThroughACheckpointFileIsBitIdentical) {
-    const Scene scene = lit_scene(std::get<0>(GetParam()), std::get<1>(GetParam()), 10);
+    const Scene scene = lit_scene(std::get<0>(GetParam()), std::get<1>(GetParam()), 10, std::get<2>(GetParam()));
     const RenderResult reference = render(scene, {.threads = 3});
     int passes = 0;
     RenderResult part = render(scene, stop_after_passes(2, 3, 2, passes));
@@ -119,7 +120,8 @@ TEST_P(Resume, ThroughACheckpointFileIsBitIdentical) {
 
 INSTANTIATE_TEST_SUITE_P(TransportIntegrators, Resume,
                          ::testing::Combine(::testing::Values(IntegratorType::kPath, IntegratorType::kBsdf),
-                                            ::testing::Values(SamplerType::kIndependent, SamplerType::kSobol)),
+                                            ::testing::Values(SamplerType::kIndependent, SamplerType::kSobol),
+                                            ::testing::Bool()),
                          param_name);
 
 TEST(ResumeRender, AbandonedPassLeavesNoTrace) {

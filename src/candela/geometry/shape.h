@@ -15,6 +15,9 @@ struct Shape {
     uint32_t material = 0;  // into the scene's materials
     Rgb emission;           // black: not a light
     bool two_sided = false; // emission leaves both sides
+    // Spectral mode: the emission as a spectrum of the scene's textures, normalized to luminance
+    // 1 and scaled; 0xffffffff: the illuminant uplift of `emission`.
+    uint32_t emission_spectrum = 0xffffffffu;
 };
 
 }  // namespace candela

@@ -10,6 +10,7 @@
 #include "candela/lights/sphere_emitter.h"
 #include "candela/math/constants.h"
 #include "candela/math/color.h"
+#include "candela/spectrum/spectral_color.h"
 
 namespace candela {
 
@@ -32,12 +33,18 @@ struct AreaLight {
     Color emission;
     bool two_sided = false;
     uint32_t shape_id = 0;  // in the scene's shapes
+    SpectralColor spectral_emission{};  // spectral mode's emission (LightSet::set_spectra)
 };
 
 // Radiance leaving a point with front normal n in direction w (away from the surface; need not
 // be unit): emission on the front side, or on both when two-sided, else black.
 CANDELA_HD inline Color area_light_radiance(const AreaLight& light, const Vec3f& n, const Vec3f& w) {
     return light.two_sided || dot(n, w) > 0.0f ? light.emission : Color();
+}
+// The same at the wavelengths `lambda` (spectral mode).
+CANDELA_HD inline Color area_light_radiance(const AreaLight& light, const Vec3f& n, const Vec3f& w,
+                                            const Color& lambda) {
+    return light.two_sided || dot(n, w) > 0.0f ? light.spectral_emission.eval(lambda) : Color();
 }
 
 // Total emitted power as luminance: a Lambertian emitter sends pi L per unit area from each

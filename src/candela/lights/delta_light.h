@@ -16,6 +16,13 @@ CANDELA_HD inline std::optional<DeltaLightSample> sample_delta_light(const Delta
     return visit([&](const auto& l) { return l.sample(ref); }, light);
 }
 
+// The light's colour: a point or spot light's intensity, a directional light's irradiance.
+CANDELA_HD inline Color delta_light_color(const DeltaLight& light) {
+    if (const PointLight* p = get_if<PointLight>(&light)) return p->intensity;
+    if (const SpotLight* s = get_if<SpotLight>(&light)) return s->intensity;
+    return get_if<DirectionalLight>(&light)->irradiance;
+}
+
 // Emitted power as luminance (W); scene_radius is the scene's bounding-sphere radius.
 CANDELA_HD inline float delta_light_power(const DeltaLight& light, float scene_radius) {
     return visit([&](const auto& l) { return l.power(scene_radius); }, light);

@@ -18,6 +18,8 @@ struct DeltaLightSample {
     Vec3f p;        // the light's position; for a directional light, ref + wi (it is infinitely far)
     Vec3f wi;       // unit, from the reference point towards the light
     Color Li;       // irradiance at ref on a surface facing the light (W/m^2): I / r^2, or E
+    float factor;   // Li over the light's colour (1 / r^2 times a spot's falloff; 1): spectral
+                    // mode multiplies the colour's spectrum by it
     bool infinite;  // a directional light: a shadow ray towards it runs to infinity
 };
 

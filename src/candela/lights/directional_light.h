@@ -21,7 +21,7 @@ struct DirectionalLight {
 
     CANDELA_HD std::optional<DeltaLightSample> sample(const Vec3f& ref) const {
         std::optional<DeltaLightSample> s;
-        s.emplace(DeltaLightSample{ref - direction, -direction, irradiance, true});
+        s.emplace(DeltaLightSample{ref - direction, -direction, irradiance, 1.0f, true});
         return s;
     }
     CANDELA_HD float power(float scene_radius) const {

@@ -49,19 +49,38 @@ LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere>
             environment_.reset();  // black: nothing to see or sample
     }
     delta_begin_ = static_cast<uint32_t>(weights.size());
-    for (const DeltaLight& light : delta_lights) {
+    for (size_t i = 0; i < delta_lights.size(); ++i) {
+        const DeltaLight& light = delta_lights[i];
         float power = delta_light_power(light, scene_radius);
         if (!(power > 0.0f) || !std::isfinite(power)) continue;  // black: it would light nothing
         weights.push_back(selection == LightSelection::kPower ? power : 1.0f);
         delta_lights_.push_back(light);
+        delta_source_.push_back(static_cast<uint32_t>(i));
     }
+    delta_spectral_.resize(delta_lights_.size());
     size_ = weights.size();
     selection_ = Distribution1D(weights);
     for (size_t i = 0; i < weights.size(); ++i) selection_probability_.push_back(selection_.probability(i));
 }
 
-Color LightSet::environment_radiance(const Vec3f& w) const {
-    return environment_ ? from_rgb(environment_->radiance(w)) : Color(0.0f);
+void LightSet::set_spectra(std::span<const SpectralColor> shape_emission, std::span<const SpectralColor> delta_emission) {
+    for (AreaLight& light : lights_) light.spectral_emission = shape_emission[light.shape_id];
+    for (size_t i = 0; i < delta_lights_.size(); ++i) delta_spectral_[i] = delta_emission[delta_source_[i]];
+}
+
+// An environment map's RGB radiance as the mode sees it; in spectral mode uplifted per lookup
+// as an illuminant (pbrt-v4's ImageInfiniteLight).
+template <bool kSpectral>
+static Color environment_color(const Rgb& rgb, const Color* lambda) {
+    if constexpr (kSpectral)
+        return rgb_illuminant_spectrum(rgb).eval(*lambda);
+    else
+        return from_rgb(rgb);
+}
+
+template <bool kSpectral>
+Color LightSet::environment_radiance_in(const Vec3f& w, const Color* lambda) const {
+    return environment_ ? environment_color<kSpectral>(environment_->radiance(w), lambda) : Color(0.0f);
 }
 
 float LightSet::environment_pdf(const Vec3f& w) const {
@@ -69,7 +88,9 @@ float LightSet::environment_pdf(const Vec3f& w) const {
     return selection_probability_[lights_.size()] * environment_->pdf(w);
 }
 
-CANDELA_HD std::optional<LightSample> LightSet::sample(const Vec3f& ref, float uc, const Vec2f& u) const {
+template <bool kSpectral>
+CANDELA_HD std::optional<LightSample> LightSet::sample_in(const Vec3f& ref, float uc, const Vec2f& u,
+                                                          const Color* lambda) const {
     // The one object returned on every path, built in place where the caller receives it.
     std::optional<LightSample> result;
     if (selection_.empty()) return result;
@@ -77,14 +98,14 @@ CANDELA_HD std::optional<LightSample> LightSet::sample(const Vec3f& ref, float u
     const float probability = selection_probability_[chosen];
     if (chosen >= lights_.size()) {  // the environment or a delta light
         if (chosen >= delta_begin_) {
-            sample_delta_light_at(ref, chosen - delta_begin_, probability, result);
+            sample_delta_light_at<kSpectral>(ref, chosen - delta_begin_, probability, lambda, result);
             return result;
         }
         std::optional<EnvironmentSample> es = environment_->sample(u);
         if (!es) return result;
         float pdf = probability * es->pdf;
         if (!(pdf > 0.0f) || !std::isfinite(pdf)) return result;
-        result.emplace(LightSample{ref + es->wi, -es->wi, es->wi, true, false, from_rgb(es->Le), pdf});
+        result.emplace(LightSample{ref + es->wi, -es->wi, es->wi, true, false, environment_color<kSpectral>(es->Le, lambda), pdf});
         return result;
     }
     const AreaLight& light = lights_[chosen];
@@ -98,17 +119,23 @@ CANDELA_HD std::optional<LightSample> LightSet::sample(const Vec3f& ref, float u
     ls.n = es->n;
     ls.wi = es->wi;
     ls.infinite = false;
-    ls.Le = area_light_radiance(light, es->n, -es->wi);
+    if constexpr (kSpectral)
+        ls.Le = area_light_radiance(light, es->n, -es->wi, *lambda);
+    else
+        ls.Le = area_light_radiance(light, es->n, -es->wi);
     ls.pdf = pdf;
     return result;
 }
 
+template <bool kSpectral>
 CANDELA_HD void LightSet::sample_delta_light_at(const Vec3f& ref, uint32_t index, float probability,
-                                                std::optional<LightSample>& result) const {
+                                                const Color* lambda, std::optional<LightSample>& result) const {
     std::optional<DeltaLightSample> ds = sample_delta_light(delta_lights_[index], ref);
     if (!ds || ds->Li.is_black()) return;
+    Color Li = ds->Li;
+    if constexpr (kSpectral) Li = delta_spectral_[index].eval(*lambda) * ds->factor;
     // The sample is certain given the light: the only density is the selection's.
-    result.emplace(LightSample{ds->p, -ds->wi, ds->wi, ds->infinite, true, ds->Li, probability});
+    result.emplace(LightSample{ds->p, -ds->wi, ds->wi, ds->infinite, true, Li, probability});
 }
 
 CANDELA_HD float LightSet::pdf(const Vec3f& ref, uint32_t shape_id, const Vec3f& p_light, const Vec3f& n_light) const {
@@ -119,14 +146,26 @@ CANDELA_HD float LightSet::pdf(const Vec3f& ref, uint32_t shape_id, const Vec3f&
     return selection_probability_[li] * emitter_pdf;
 }
 
-CANDELA_HD Color LightSet::emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w) const {
+template <bool kSpectral>
+CANDELA_HD Color LightSet::emitted_in(uint32_t shape_id, const Vec3f& n, const Vec3f& w, const Color* lambda) const {
     uint32_t li = light_index(shape_id);
-    return li == kNoLight ? Color() : area_light_radiance(lights_[li], n, w);
+    if (li == kNoLight) return Color();
+    if constexpr (kSpectral)
+        return area_light_radiance(lights_[li], n, w, *lambda);
+    else
+        return area_light_radiance(lights_[li], n, w);
 }
 
 CANDELA_HD float LightSet::selection_probability(uint32_t shape_id) const {
     uint32_t li = light_index(shape_id);
     return li == kNoLight ? 0.0f : selection_probability_[li];
 }
+
+template Color LightSet::environment_radiance_in<false>(const Vec3f&, const Color*) const;
+template Color LightSet::environment_radiance_in<true>(const Vec3f&, const Color*) const;
+template std::optional<LightSample> LightSet::sample_in<false>(const Vec3f&, float, const Vec2f&, const Color*) const;
+template std::optional<LightSample> LightSet::sample_in<true>(const Vec3f&, float, const Vec2f&, const Color*) const;
+template Color LightSet::emitted_in<false>(uint32_t, const Vec3f&, const Vec3f&, const Color*) const;
+template Color LightSet::emitted_in<true>(uint32_t, const Vec3f&, const Vec3f&, const Color*) const;
 
 }  // namespace candela

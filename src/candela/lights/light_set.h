@@ -59,8 +59,20 @@ class LightSet {
     // Whether sample() reads uc: there is more than one light to choose from.
     CANDELA_HD bool uses_choice() const { return size() > 1; }
 
+    // Spectral mode: the emission of the area light of each shape (indexed by shape id; shapes
+    // that are not lights are skipped) and of each delta light (in the order the constructor got
+    // them, including any it left out). The spectra must outlive the set.
+    void set_spectra(std::span<const SpectralColor> shape_emission, std::span<const SpectralColor> delta_emission);
+
+    // The functions below give RGB-mode colours, and with `lambda` the values at a path's
+    // wavelengths (spectral mode): two instances of one template each, so that RGB mode's code
+    // is what it was before spectral mode existed.
+
     // Radiance arriving from world direction w (unit) from the environment; black without one.
-    Color environment_radiance(const Vec3f& w) const;
+    Color environment_radiance(const Vec3f& w) const { return environment_radiance_in<false>(w, nullptr); }
+    Color environment_radiance(const Vec3f& w, const Color& lambda) const {
+        return environment_radiance_in<true>(w, &lambda);
+    }
     // The pdf per solid angle (selection included) with which sample() produces direction w
     // towards the environment; 0 without one.
     float environment_pdf(const Vec3f& w) const;
@@ -69,7 +81,12 @@ class LightSet {
     // nullopt when nothing can be sampled (no lights, a zero pdf, or a delta light that sends
     // nothing to ref). A point on the back of a one-sided light comes back with black Le and its
     // true pdf (a sphere of reverse orientation seen from outside shows only its back).
-    CANDELA_HD std::optional<LightSample> sample(const Vec3f& ref, float uc, const Vec2f& u) const;
+    CANDELA_HD std::optional<LightSample> sample(const Vec3f& ref, float uc, const Vec2f& u) const {
+        return sample_in<false>(ref, uc, u, nullptr);
+    }
+    CANDELA_HD std::optional<LightSample> sample(const Vec3f& ref, float uc, const Vec2f& u, const Color& lambda) const {
+        return sample_in<true>(ref, uc, u, &lambda);
+    }
 
     // The pdf per solid angle (selection included) with which sample() from `ref` would have
     // produced point `p_light` with front normal `n_light` on shape `shape_id`; 0 if that shape
@@ -78,7 +95,12 @@ class LightSet {
 
     // Radiance leaving a point of shape `shape_id` with front normal n in direction w (unit,
     // pointing away from the surface); black for non-emitters and from behind one-sided ones.
-    CANDELA_HD Color emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w) const;
+    CANDELA_HD Color emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w) const {
+        return emitted_in<false>(shape_id, n, w, nullptr);
+    }
+    CANDELA_HD Color emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w, const Color& lambda) const {
+        return emitted_in<true>(shape_id, n, w, &lambda);
+    }
 
     // The probability that sample() picks the light of shape `shape_id`; 0 if it is not a light.
     CANDELA_HD float selection_probability(uint32_t shape_id) const;
@@ -86,10 +108,20 @@ class LightSet {
   private:
     static constexpr uint32_t kNoLight = 0xffffffffu;
 
+    // The mode's implementations (lambda null when !kSpectral); instantiated in light_set.cpp.
+    template <bool kSpectral>
+    Color environment_radiance_in(const Vec3f& w, const Color* lambda) const;
+    template <bool kSpectral>
+    CANDELA_HD std::optional<LightSample> sample_in(const Vec3f& ref, float uc, const Vec2f& u,
+                                                    const Color* lambda) const;
+    template <bool kSpectral>
+    CANDELA_HD Color emitted_in(uint32_t shape_id, const Vec3f& n, const Vec3f& w, const Color* lambda) const;
+
     // sample() for delta_lights_[index], chosen with `probability`: written into `result`, out
     // of line (the area lights' and the environment's paths stay as they were without delta
     // lights).
-    CANDELA_HD void sample_delta_light_at(const Vec3f& ref, uint32_t index, float probability,
+    template <bool kSpectral>
+    CANDELA_HD void sample_delta_light_at(const Vec3f& ref, uint32_t index, float probability, const Color* lambda,
                                           std::optional<LightSample>& result) const;
 
     // The index in lights_ of shape `shape_id`, or kNoLight.
@@ -101,6 +133,8 @@ class LightSet {
     std::vector<uint32_t> light_of_shape_;  // shape id -> index in lights_, or kNoLight
     std::optional<EnvironmentLight> environment_;
     std::vector<DeltaLight> delta_lights_;
+    std::vector<uint32_t> delta_source_;          // delta_lights_[i] is the constructor's delta_source_[i]
+    std::vector<SpectralColor> delta_spectral_;   // parallel to delta_lights_ (set_spectra)
     uint32_t delta_begin_ = 0;              // the selection index of delta_lights_[0]
     size_t size_ = 0;                       // area lights, environment and delta lights
     Distribution1D selection_;              // over lights_, then the environment, then delta_lights_

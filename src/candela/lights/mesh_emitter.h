@@ -80,7 +80,7 @@ CANDELA_HD inline void MeshEmitter::sample_by_triangle(Vec2f u, EmitterSample& s
     }
 }
 
-CANDELA_HD inline std::optional<EmitterSample> MeshEmitter::sample(const Vec3f& ref, Vec2f u) const {
+[[gnu::always_inline]] CANDELA_HD inline std::optional<EmitterSample> MeshEmitter::sample(const Vec3f& ref, Vec2f u) const {
     std::optional<EmitterSample> result;  // the one object returned, built in place
     if (triangles_.empty()) return result;
     EmitterSample& s = result.emplace();

@@ -24,7 +24,7 @@ struct PointLight {
         Vec3f d = position - ref;
         float dist2 = dot(d, d);
         if (!(dist2 > 0.0f)) return s;
-        s.emplace(DeltaLightSample{position, d * (1.0f / std::sqrt(dist2)), intensity / dist2, false});
+        s.emplace(DeltaLightSample{position, d * (1.0f / std::sqrt(dist2)), intensity / dist2, 1.0f / dist2, false});
         return s;
     }
     CANDELA_HD float power(float /*scene_radius*/) const { return power_per_intensity() * to_rgb(intensity).luminance(); }

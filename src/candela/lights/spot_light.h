@@ -48,7 +48,7 @@ struct SpotLight {
         Vec3f wi = d * (1.0f / std::sqrt(dist2));
         float f = falloff(dot(-wi, axis));
         if (f == 0.0f) return s;  // outside the cone (pbrt-v4 returns no sample there either)
-        s.emplace(DeltaLightSample{position, wi, intensity * (f / dist2), false});
+        s.emplace(DeltaLightSample{position, wi, intensity * (f / dist2), f / dist2, false});
         return s;
     }
     CANDELA_HD float power(float /*scene_radius*/) const {

@@ -16,6 +16,13 @@
 
 namespace candela {
 
+// The index of refraction a lobe uses: `ior`, or in spectral mode, when the scene gives the index
+// as a spectrum (a dispersive glass), its value at the path's hero wavelength (the integrator has
+// then kept only that wavelength: SampledWavelengths::terminate_secondary).
+CANDELA_HD inline float ior_at(float ior, uint32_t ior_spectrum, const TextureSet& t, const TextureContext& ctx) {
+    return ctx.lambda && ior_spectrum != kNoSpectrum ? t.spectrum(ior_spectrum)((*ctx.lambda)[0]) : ior;
+}
+
 template <class T>
 concept LobeParamsType = requires(const T& p, const TextureSet& textures, const TextureContext& ctx) {
     // The lobe at a shading point.
@@ -32,6 +39,11 @@ struct DiffuseParams {
         return LambertianLobe{t.eval(albedo, ctx)};
     }
     CANDELA_HD bool is_textured() const { return albedo.is_textured(); }
+    // Passes each colour parameter to f (make_material prepares them for spectral mode).
+    template <class F>
+    void for_each_color(F&& f) {
+        f(albedo);
+    }
 };
 static_assert(LobeParamsType<DiffuseParams>);
 
@@ -43,6 +55,11 @@ struct MirrorParams {
         return SpecularReflectionLobe{t.eval(albedo, ctx)};
     }
     CANDELA_HD bool is_textured() const { return albedo.is_textured(); }
+    // Passes each colour parameter to f (make_material prepares them for spectral mode).
+    template <class F>
+    void for_each_color(F&& f) {
+        f(albedo);
+    }
 };
 static_assert(LobeParamsType<MirrorParams>);
 
@@ -53,9 +70,18 @@ struct DielectricParams {
     bool schlick = false;
 
     CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
-        return FresnelSpecularLobe{t.eval(tint, ctx), ior, schlick};
+        return FresnelSpecularLobe{t.eval(tint, ctx), ior_at(ior, ior_spectrum, t, ctx), schlick};
     }
     CANDELA_HD bool is_textured() const { return tint.is_textured(); }
+    // Passes each colour parameter to f (make_material prepares them for spectral mode).
+    template <class F>
+    void for_each_color(F&& f) {
+        f(tint);
+    }
+    // The index as a spectrum of the TextureSet (a dispersive glass), for spectral mode; `ior` is
+    // then its value at 587.6 nm (the d line, a glass's catalogue index), for RGB mode.
+    uint32_t ior_spectrum = kNoSpectrum;
+    CANDELA_HD bool is_dispersive() const { return ior_spectrum != kNoSpectrum; }
 };
 static_assert(LobeParamsType<DielectricParams>);
 
@@ -65,9 +91,21 @@ struct TransmissionParams {
     ColorParam tint{Rgb(1.0f)};
 
     CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
-        return SpecularTransmissionLobe{t.eval(tint, ctx), ior};
+        SpecularTransmissionLobe l;
+        l.tint = t.eval(tint, ctx);
+        l.eta = ior_at(ior, ior_spectrum, t, ctx);
+        return l;
     }
     CANDELA_HD bool is_textured() const { return tint.is_textured(); }
+    // Passes each colour parameter to f (make_material prepares them for spectral mode).
+    template <class F>
+    void for_each_color(F&& f) {
+        f(tint);
+    }
+    // The index as a spectrum of the TextureSet (a dispersive glass), for spectral mode; `ior` is
+    // then its value at 587.6 nm (the d line, a glass's catalogue index), for RGB mode.
+    uint32_t ior_spectrum = kNoSpectrum;
+    CANDELA_HD bool is_dispersive() const { return ior_spectrum != kNoSpectrum; }
 };
 static_assert(LobeParamsType<TransmissionParams>);
 
@@ -104,6 +142,12 @@ struct ConductorParams {
         return eta.is_textured() || k.is_textured() || roughness.is_textured();
     }
     CANDELA_HD bool is_anisotropic() const { return roughness.is_anisotropic(); }
+    // Passes each colour parameter to f (make_material prepares them for spectral mode).
+    template <class F>
+    void for_each_color(F&& f) {
+        f(eta);
+        f(k);
+    }
 };
 static_assert(LobeParamsType<ConductorParams>);
 
@@ -129,6 +173,11 @@ struct ConductorReflectanceParams {
     }
     CANDELA_HD bool is_textured() const { return reflectance.is_textured() || roughness.is_textured(); }
     CANDELA_HD bool is_anisotropic() const { return roughness.is_anisotropic(); }
+    // Passes each colour parameter to f (make_material prepares them for spectral mode).
+    template <class F>
+    void for_each_color(F&& f) {
+        f(reflectance);
+    }
 };
 static_assert(LobeParamsType<ConductorReflectanceParams>);
 
@@ -140,12 +189,21 @@ struct RoughDielectricParams {
     bool multiscatter = false;  // add the compensation of microfacet_multiscatter.h
 
     CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
-        DielectricLobe l{t.eval(tint, ctx), ior, roughness.distribution(t, ctx)};
+        DielectricLobe l{t.eval(tint, ctx), ior_at(ior, ior_spectrum, t, ctx), roughness.distribution(t, ctx)};
         if (multiscatter) return l.with_multiscatter();
         return l;
     }
     CANDELA_HD bool is_textured() const { return tint.is_textured() || roughness.is_textured(); }
     CANDELA_HD bool is_anisotropic() const { return roughness.is_anisotropic(); }
+    // Passes each colour parameter to f (make_material prepares them for spectral mode).
+    template <class F>
+    void for_each_color(F&& f) {
+        f(tint);
+    }
+    // The index as a spectrum of the TextureSet (a dispersive glass), for spectral mode; `ior` is
+    // then its value at 587.6 nm (the d line, a glass's catalogue index), for RGB mode.
+    uint32_t ior_spectrum = kNoSpectrum;
+    CANDELA_HD bool is_dispersive() const { return ior_spectrum != kNoSpectrum; }
 };
 static_assert(LobeParamsType<RoughDielectricParams>);
 
@@ -153,10 +211,16 @@ static_assert(LobeParamsType<RoughDielectricParams>);
 struct ThinDielectricParams {
     float ior = 1.5f;
 
-    CANDELA_HD BsdfLobe lobe(const TextureSet&, const TextureContext&) const {
-        return ThinDielectricLobe{ior};
+    CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
+        return ThinDielectricLobe{ior_at(ior, ior_spectrum, t, ctx)};
     }
     CANDELA_HD bool is_textured() const { return false; }
+    template <class F>
+    void for_each_color(F&&) {}
+    // The index as a spectrum of the TextureSet (a dispersive glass), for spectral mode; `ior` is
+    // then its value at 587.6 nm (the d line, a glass's catalogue index), for RGB mode.
+    uint32_t ior_spectrum = kNoSpectrum;
+    CANDELA_HD bool is_dispersive() const { return ior_spectrum != kNoSpectrum; }
 };
 static_assert(LobeParamsType<ThinDielectricParams>);
 
@@ -186,6 +250,11 @@ struct CoatParams {
         return roughness.is_textured() || thickness.is_textured() || medium_albedo.is_textured() ||
                g.is_textured();
     }
+    // Passes each colour parameter to f (make_material prepares them for spectral mode).
+    template <class F>
+    void for_each_color(F&& f) {
+        f(medium_albedo);
+    }
 };
 
 // `coated_diffuse`: a dielectric coat over a Lambertian base of reflectance `albedo`.
@@ -200,6 +269,12 @@ struct CoatedDiffuseParams {
         return l;
     }
     CANDELA_HD bool is_textured() const { return coat.is_textured() || albedo.is_textured(); }
+    // Passes each colour parameter to f (make_material prepares them for spectral mode).
+    template <class F>
+    void for_each_color(F&& f) {
+        coat.for_each_color(f);
+        f(albedo);
+    }
 };
 static_assert(LobeParamsType<CoatedDiffuseParams>);
 
@@ -229,6 +304,14 @@ struct CoatedConductorParams {
     CANDELA_HD bool is_textured() const {
         return coat.is_textured() || conductor_eta.is_textured() || conductor_k.is_textured() ||
                reflectance.is_textured() || conductor_roughness.is_textured();
+    }
+    // Passes each colour parameter to f (make_material prepares them for spectral mode).
+    template <class F>
+    void for_each_color(F&& f) {
+        coat.for_each_color(f);
+        f(conductor_eta);
+        f(conductor_k);
+        f(reflectance);
     }
 };
 static_assert(LobeParamsType<CoatedConductorParams>);

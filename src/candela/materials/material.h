@@ -27,6 +27,9 @@ struct Material {
     // textured || needs_shading_geometry: the one flag the path tracer tests at every vertex.
     bool per_hit = false;
     bool anisotropic = false;  // some lobe's x axis must follow the surface's dpdu
+    // Some lobe's index of refraction is a spectrum: in spectral mode a path that meets this
+    // material keeps only its hero wavelength (SampledWavelengths::terminate_secondary).
+    bool dispersive = false;
     SurfaceParams surface;     // normal or bump map, alpha
 };
 
@@ -43,6 +46,16 @@ template <class P>
 CANDELA_HD bool lobe_is_anisotropic(const P& p) {
     if constexpr (requires { { p.is_anisotropic() } -> std::same_as<bool>; })
         return p.is_anisotropic();
+    else
+        return false;
+}
+
+// Whether lobe parameters `p` have an index of refraction that varies with wavelength (a lobe
+// type says so by an is_dispersive() member).
+template <class P>
+CANDELA_HD bool lobe_is_dispersive(const P& p) {
+    if constexpr (requires { { p.is_dispersive() } -> std::same_as<bool>; })
+        return p.is_dispersive();
     else
         return false;
 }
@@ -65,6 +78,8 @@ inline Material make_material(std::span<const LobeParams> parts) {
     for (const LobeParams& p : parts) {
         const uint32_t k = m.bsdf.lobe_count++;
         m.params[k] = p;
+        visit([](auto& q) { q.for_each_color([](ColorParam& c) { prepare_spectral(c); }); }, m.params[k]);
+        m.dispersive = m.dispersive || visit([](const auto& q) { return lobe_is_dispersive(q); }, p);
         // Textured parameters contribute their constant here; build_bsdf replaces the lobe.
         m.bsdf.lobes[k] = visit([&](const auto& q) { return q.lobe(no_textures, anywhere); }, p);
         m.textured = m.textured || visit([](const auto& q) { return q.is_textured(); }, p);

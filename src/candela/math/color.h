@@ -21,8 +21,15 @@ namespace candela {
 
 inline constexpr int kColorChannels = 4;
 
-struct alignas(16) Color {
-    float c[kColorChannels] = {0.0f, 0.0f, 0.0f, 0.0f};
+// The four channels as one GCC/Clang vector: every arithmetic operator is one SSE instruction
+// (mulps, addps, ...), which rounds each channel exactly as the scalar operation would, so RGB
+// mode's channels are the bits that three floats gave. Aligned to 4 bytes, not the vector's 16:
+// the padding 16-byte alignment adds to the structs that hold colours (lobes, light samples,
+// lights) cost 5% on the Cornell box, unaligned loads nothing (bench/RESULTS.md, issue 14).
+typedef float ColorLanes __attribute__((vector_size(16), aligned(4)));
+
+struct Color {
+    ColorLanes c = {0.0f, 0.0f, 0.0f, 0.0f};
 
     CANDELA_HD constexpr Color() = default;
     // The same value in every channel: grey in RGB mode, a constant spectrum in spectral mode.
@@ -33,30 +40,30 @@ struct alignas(16) Color {
     CANDELA_HD constexpr Color(const Rgb& v) : c{v.r, v.g, v.b, v.r} {}
     CANDELA_HD static constexpr Color from_channels(float c0, float c1, float c2, float c3) {
         Color x;
-        x.c[0] = c0; x.c[1] = c1; x.c[2] = c2; x.c[3] = c3;
+        x.c = ColorLanes{c0, c1, c2, c3};
         return x;
     }
 
     CANDELA_HD constexpr float operator[](int i) const { return c[i]; }
-    CANDELA_HD constexpr float& operator[](int i) { return c[i]; }
+    CANDELA_HD void set(int i, float v) { c[i] = v; }
 
 #define CANDELA_COLOR_OP(OP)                                                                      \
     CANDELA_HD constexpr Color operator OP(const Color& o) const {                                 \
         Color r;                                                                                   \
-        for (int i = 0; i < kColorChannels; ++i) r.c[i] = c[i] OP o.c[i];                          \
+        r.c = c OP o.c;                                                                            \
         return r;                                                                                  \
     }                                                                                              \
     CANDELA_HD constexpr Color operator OP(float s) const {                                        \
         Color r;                                                                                   \
-        for (int i = 0; i < kColorChannels; ++i) r.c[i] = c[i] OP s;                               \
+        r.c = c OP s;                                                                              \
         return r;                                                                                  \
     }                                                                                              \
     CANDELA_HD constexpr Color& operator OP##=(const Color& o) {                                   \
-        for (int i = 0; i < kColorChannels; ++i) c[i] OP## = o.c[i];                               \
+        c = c OP o.c;                                                                              \
         return *this;                                                                              \
     }                                                                                              \
     CANDELA_HD constexpr Color& operator OP##=(float s) {                                          \
-        for (int i = 0; i < kColorChannels; ++i) c[i] OP## = s;                                    \
+        c = c OP s;                                                                                \
         return *this;                                                                              \
     }
     CANDELA_COLOR_OP(+)
@@ -66,15 +73,11 @@ struct alignas(16) Color {
 #undef CANDELA_COLOR_OP
 
     CANDELA_HD constexpr bool operator==(const Color& o) const {
-        for (int i = 0; i < kColorChannels; ++i)
-            if (c[i] != o.c[i]) return false;
-        return true;
+        return c[0] == o.c[0] && c[1] == o.c[1] && c[2] == o.c[2] && c[3] == o.c[3];
     }
 
     CANDELA_HD constexpr bool is_black() const {
-        for (int i = 0; i < kColorChannels; ++i)
-            if (c[i] != 0.0f) return false;
-        return true;
+        return c[0] == 0.0f && c[1] == 0.0f && c[2] == 0.0f && c[3] == 0.0f;
     }
     CANDELA_HD constexpr float max_component() const {
         float a = c[0] > c[1] ? c[0] : c[1];  // a tree of maxss, no branch
@@ -95,16 +98,12 @@ CANDELA_HD constexpr Rgb to_rgb(const Color& x) { return Rgb(x.c[0], x.c[1], x.c
 // Applies f to every channel.
 template <class F>
 CANDELA_HD inline Color map_channels(const Color& x, F&& f) {
-    Color r;
-    for (int i = 0; i < kColorChannels; ++i) r.c[i] = f(x.c[i]);
-    return r;
+    return Color::from_channels(f(x.c[0]), f(x.c[1]), f(x.c[2]), f(x.c[3]));
 }
 // Applies f to the channels of a and b pairwise.
 template <class F>
 CANDELA_HD inline Color map_channels(const Color& a, const Color& b, F&& f) {
-    Color r;
-    for (int i = 0; i < kColorChannels; ++i) r.c[i] = f(a.c[i], b.c[i]);
-    return r;
+    return Color::from_channels(f(a.c[0], b.c[0]), f(a.c[1], b.c[1]), f(a.c[2], b.c[2]), f(a.c[3], b.c[3]));
 }
 
 // Element-wise quotient; a channel divided by 0 gives 0 (a black denominator means "no light").

@@ -15,7 +15,9 @@ TransportIntegrator::TransportIntegrator(const Scene& scene, const Accelerator& 
       accel_(accel),
       lights_(lights),
       any_material_uses_choice_(std::any_of(scene.materials.begin(), scene.materials.end(),
-                                            [](const Material& m) { return m.bsdf.uses_choice(); })) {}
+                                            [](const Material& m) { return m.bsdf.uses_choice(); })),
+      spectral_(scene.integrator.spectral),
+      sensor_(make_sensor(scene.film)) {}
 
 std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Accelerator& accel, const LightSet& lights) {
     const IntegratorSettings& s = scene.integrator;

@@ -12,6 +12,7 @@
 #include "candela/render/shading_frame.h"
 #include "candela/sampling/sampler.h"
 #include "candela/scene/scene.h"
+#include "candela/spectrum/sampled_wavelengths.h"
 
 namespace candela {
 
@@ -22,13 +23,17 @@ namespace candela {
 // ask the accelerator for the surface's parametrization (render/shading_frame.h).
 struct PathVertex {
     const SurfaceHit& hit;
-    std::optional<Bsdf> textured_bsdf;  // engaged only for textured materials
+    std::optional<Bsdf> textured_bsdf;  // engaged only for textured materials and in spectral mode
     const Bsdf& bsdf;
     Frame frame;  // z = shading normal, on the geometric normal's side
     Vec3f wo;     // towards where the path came from, local
 
     PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray)
         : PathVertex(scene, accel, h, ray, scene.materials[scene.shapes[h.shape_id].material]) {}
+    // Spectral mode: the BSDF at the path's wavelengths, built at every hit; a dispersive
+    // material first keeps only the hero wavelength of `w`.
+    PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, SampledWavelengths& w)
+        : PathVertex(scene, accel, h, ray, scene.materials[scene.shapes[h.shape_id].material], w) {}
 
   private:
     // One flag per vertex for materials without textures, maps or anisotropy (the Cornell box's):
@@ -41,6 +46,18 @@ struct PathVertex {
           frame(m.per_hit ? per_hit_frame(scene, accel, m, h) : Frame::from_normal(h.ns)),
           wo(frame.to_local(-ray.d)) {}
 
+    PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, const Material& m,
+               SampledWavelengths& w)
+        : hit(h),
+          bsdf(spectral_bsdf(scene, accel, m, w)),
+          frame(m.per_hit ? per_hit_frame(scene, accel, m, h) : Frame::from_normal(h.ns)),
+          wo(frame.to_local(-ray.d)) {}
+
+    const Bsdf& spectral_bsdf(const Scene& scene, const Accelerator& accel, const Material& m, SampledWavelengths& w) {
+        if (m.dispersive) w.terminate_secondary();
+        const Vec2f uv = m.textured ? accel.uv(hit) : Vec2f();
+        return textured_bsdf.emplace(build_bsdf(m, scene.textures, TextureContext{uv, hit.p, &w.lambda}));
+    }
     const Bsdf& per_hit_bsdf(const Scene& scene, const Accelerator& accel, const Material& m) {
         if (!m.textured) return m.bsdf;
         return textured_bsdf.emplace(build_bsdf(m, scene.textures, TextureContext{accel.uv(hit), hit.p}));
@@ -128,10 +145,16 @@ inline bool survive_russian_roulette(Color& beta, float eta_scale, int bounces, 
 // against BSDF sampling when `mis`, except for a delta light (point, spot, directional), which BSDF
 // sampling cannot find: its weight is 1 (pbrt-v4's PathIntegrator::SampleLd). Counts its shadow
 // ray. Black for delta-only BSDFs.
+// `lambda`: the path's wavelengths in spectral mode (kSpectral), else unused.
+template <bool kSpectral = false>
 inline Color sample_direct_light(const PathVertex& v, const LightSet& lights, const Accelerator& accel, bool mis,
-                               const LightNumbers& n, RayCounters& counters) {
+                                 const LightNumbers& n, RayCounters& counters, const Color* lambda = nullptr) {
     if (v.bsdf.is_delta_only() || lights.empty()) return Color(0.0f);
-    std::optional<LightSample> ls = lights.sample(v.hit.p, n.uc, n.u);
+    std::optional<LightSample> ls;
+    if constexpr (kSpectral)
+        ls = lights.sample(v.hit.p, n.uc, n.u, *lambda);
+    else
+        ls = lights.sample(v.hit.p, n.uc, n.u);
     if (!ls || ls->pdf <= 0.0f || ls->Le.is_black()) return Color(0.0f);
     Vec3f wi = v.frame.to_local(ls->wi);
     Color f = v.bsdf.eval(v.wo, wi, TransportMode::kRadiance) * std::abs(wi.z);
@@ -154,6 +177,16 @@ inline std::optional<BsdfSample> continue_path(const PathVertex& v, const BsdfNu
     beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
     ray = spawn_ray(v.hit, v.frame.to_world(bs->wi));
     return bs;
+}
+
+// The vertex at `hit` in the integrator's mode: RGB (w unused) or spectral at the wavelengths w.
+template <bool kSpectral>
+PathVertex make_vertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& hit, const Ray& ray,
+                       SampledWavelengths* w) {
+    if constexpr (kSpectral)
+        return PathVertex(scene, accel, hit, ray, *w);
+    else
+        return PathVertex(scene, accel, hit, ray);
 }
 
 }  // namespace candela

@@ -6,7 +6,14 @@ namespace candela {
 // pbrt-v4's PathIntegrator::Li. At each vertex: emission found
 // by the BSDF-sampled ray (MIS-weighted against having sampled the light), then one light sample
 // (MIS-weighted against having sampled the BSDF), then the next direction by BSDF sampling.
-Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const {
+Rgb PathIntegrator::radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
+    return in_mode(ray, sampler, counters, [this](auto spectral, const Ray& r, Sampler& s, RayCounters& c,
+                                                  SampledWavelengths* w) { return trace<spectral()>(r, s, c, w); });
+}
+
+template <bool kSpectral>
+Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& counters, SampledWavelengths* w) const {
+    const Color* lambda = kSpectral ? &w->lambda : nullptr;
     Color L(0.0f), beta(1.0f);
     float eta_scale = 1.0f;  // product of eta^2 over refractions, to undo them for roulette
     Ray ray = camera_ray;
@@ -22,7 +29,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounter
         std::optional<SurfaceHit> hit = accel_.intersect(ray);
         if (!hit) {
             // The ray escapes to the environment: the same MIS rule as for hitting an emitter.
-            Color Le = lights_.environment_radiance(ray.d);
+            Color Le = environment_radiance<kSpectral>(ray.d, lambda);
             if (bounces == 0 || after_delta)
                 L += beta * Le;
             else if (scene_.integrator.mis)
@@ -30,7 +37,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounter
             break;
         }
 
-        Color Le = lights_.emitted(hit->shape_id, hit->ng, -ray.d);
+        Color Le = emitted<kSpectral>(hit->shape_id, hit->ng, -ray.d, lambda);
         if (!Le.is_black()) {
             if (bounces == 0 || after_delta) {
                 L += beta * Le;
@@ -42,8 +49,8 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounter
         }
         if (bounces == scene_.integrator.max_depth) break;
 
-        PathVertex v(scene_, accel_, *hit, ray);
-        L += beta * sample_direct_light(v, lights_, accel_, scene_.integrator.mis, light_numbers, counters);
+        PathVertex v = make_vertex<kSpectral>(scene_, accel_, *hit, ray, w);
+        L += beta * sample_direct_light<kSpectral>(v, lights_, accel_, scene_.integrator.mis, light_numbers, counters, lambda);
 
         std::optional<BsdfSample> bs = continue_path(v, bsdf_numbers, beta, ray);
         if (!bs) break;
@@ -53,7 +60,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounter
         prev_p = hit->p;
         if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, roulette_number)) break;
     }
-    return to_rgb(L);
+    return L;
 }
 
 }  // namespace candela

@@ -22,6 +22,7 @@ struct IntegratorSettings {
                                       // false: NEE only (emission found by BSDF rays ignored)
     LightSelection light_selection = LightSelection::kPower;
     float max_distance = kInfinity;   // `ao`: occluders farther than this do not count
+    bool spectral = false;            // transport four wavelengths per path (path, bsdf, whitted)
 };
 
 struct SamplerSettings {

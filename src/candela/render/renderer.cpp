@@ -128,15 +128,35 @@ LightSet build_light_set(const Scene& scene, const Accelerator& accel) {
     Bounds3f bounds = accel.bounds();
     float scene_radius = bounds.empty() ? 1.0f : std::max(0.5f * length(bounds.diagonal()), 1e-6f);
     std::vector<DeltaLight> delta_lights;
+    std::vector<SpectralColor> delta_spectra;
     for (const DeltaLightSettings& settings : scene.delta_lights) {
         DeltaLight light = settings.light;
-        if (auto* directional = get_if<DirectionalLight>(&light); directional && settings.directional_power)
-            directional->irradiance *=
-                *settings.directional_power / DirectionalLight::power_per_irradiance(scene_radius);
+        float power_scale = 1.0f;
+        if (auto* directional = get_if<DirectionalLight>(&light); directional && settings.directional_power) {
+            power_scale = *settings.directional_power / DirectionalLight::power_per_irradiance(scene_radius);
+            directional->irradiance *= power_scale;
+        }
         delta_lights.push_back(light);
+        if (settings.spectrum != kNoSpectrum)
+            delta_spectra.push_back(
+                SpectralColor{{}, &scene.textures.spectrum(settings.spectrum), settings.spectrum_scale * power_scale});
+        else
+            delta_spectra.push_back(SpectralColor{rgb_illuminant_spectrum(to_rgb(delta_light_color(light))), nullptr, 1.0f});
     }
-    return LightSet(scene.meshes, scene.spheres, scene.disks, scene.shapes, delta_lights,
+    LightSet lights(scene.meshes, scene.spheres, scene.disks, scene.shapes, delta_lights,
                     scene.integrator.light_selection, std::move(environment), scene_radius);
+    if (scene.integrator.spectral) {
+        std::vector<SpectralColor> shape_spectra(scene.shapes.size());
+        for (size_t i = 0; i < scene.shapes.size(); ++i) {
+            const Shape& shape = scene.shapes[i];
+            if (shape.emission_spectrum != kNoSpectrum)
+                shape_spectra[i] = SpectralColor{{}, &scene.textures.spectrum(shape.emission_spectrum), 1.0f};
+            else
+                shape_spectra[i].rgb = rgb_illuminant_spectrum(shape.emission);
+        }
+        lights.set_spectra(shape_spectra, delta_spectra);
+    }
+    return lights;
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& options) {

@@ -3,7 +3,14 @@
 
 namespace candela {
 
-Rgb WhittedIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const {
+Rgb WhittedIntegrator::radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
+    return in_mode(ray, sampler, counters, [this](auto spectral, const Ray& r, Sampler& s, RayCounters& c,
+                                                  SampledWavelengths* w) { return trace<spectral()>(r, s, c, w); });
+}
+
+template <bool kSpectral>
+Color WhittedIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& counters, SampledWavelengths* w) const {
+    const Color* lambda = kSpectral ? &w->lambda : nullptr;
     Color L(0.0f), beta(1.0f);
     Ray ray = camera_ray;
     for (int bounces = 0;; ++bounces) {
@@ -13,21 +20,21 @@ Rgb WhittedIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, RayCoun
         const BsdfNumbers bsdf_numbers = draw_bsdf_numbers(sampler, any_material_uses_choice_);
         std::optional<SurfaceHit> hit = accel_.intersect(ray);
         if (!hit) {
-            L += beta * lights_.environment_radiance(ray.d);
+            L += beta * environment_radiance<kSpectral>(ray.d, lambda);
             break;
         }
         // Seen directly or through delta bounces only (the loop ends at any other bounce).
-        L += beta * lights_.emitted(hit->shape_id, hit->ng, -ray.d);
+        L += beta * emitted<kSpectral>(hit->shape_id, hit->ng, -ray.d, lambda);
         if (bounces == scene_.integrator.max_depth) break;
 
-        PathVertex v(scene_, accel_, *hit, ray);
-        L += beta * sample_direct_light(v, lights_, accel_, /*mis=*/false, light_numbers, counters);
+        PathVertex v = make_vertex<kSpectral>(scene_, accel_, *hit, ray, w);
+        L += beta * sample_direct_light<kSpectral>(v, lights_, accel_, /*mis=*/false, light_numbers, counters, lambda);
 
         // Only delta lobes continue the path; a non-delta choice ends it (its light is counted).
         std::optional<BsdfSample> bs = continue_path(v, bsdf_numbers, beta, ray);
         if (!bs || !bs->is_delta) break;
     }
-    return to_rgb(L);
+    return L;
 }
 
 }  // namespace candela

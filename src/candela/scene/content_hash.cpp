@@ -82,11 +82,20 @@ uint64_t scene_content_hash(std::string_view json_text, const Scene& scene) {
     hash.add_u64(uint64_t(scene.camera.width));
     hash.add_u64(uint64_t(scene.camera.height));
     hash.add_field(integrator_type_name(scene.integrator.type));
+    // Only when set, so that RGB renders keep the hashes of their checkpoints from before the
+    // spectral mode (the flag may come from --spectral, which the JSON text does not show).
+    if (scene.integrator.spectral) hash.add_field("spectral");
     hash.add_field(sampler_type_name(scene.sampler.type));
     hash.add_u64(scene.sampler.seed);
-    // The sensor (--iso, --exposure-time, --white-balance): spectral mode applies it per sample.
-    for (float v : {scene.film.iso, scene.film.exposure_time, scene.film.white_balance})
-        hash.add_u64(std::bit_cast<uint32_t>(v));
+    // The sensor (--iso, --exposure-time, --white-balance), applied to every sample: only when
+    // not pbrt-v4's defaults, so that checkpoints from before these keys keep their hashes.
+    const FilmSettings defaults;
+    if (scene.film.iso != defaults.iso || scene.film.exposure_time != defaults.exposure_time ||
+        scene.film.white_balance != defaults.white_balance) {
+        hash.add_field("sensor");
+        for (float v : {scene.film.iso, scene.film.exposure_time, scene.film.white_balance})
+            hash.add_u64(std::bit_cast<uint32_t>(v));
+    }
     return hash.value();
 }
 

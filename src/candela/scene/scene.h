@@ -50,6 +50,10 @@ struct TextureFile {
 struct DeltaLightSettings {
     DeltaLight light;
     std::optional<float> directional_power;  // W; only for a directional light
+    // Spectral mode: the light's colour as a spectrum of textures (kNoSpectrum: its RGB colour's
+    // illuminant uplift), normalized to luminance 1, times spectrum_scale (its scale and power).
+    uint32_t spectrum = kNoSpectrum;
+    float spectrum_scale = 1.0f;
 };
 
 struct Scene {

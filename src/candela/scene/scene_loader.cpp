@@ -42,6 +42,7 @@ void read_integrator(JsonCursor c, IntegratorSettings& integrator) {
     if (auto v = c.get("rr_depth")) integrator.rr_depth = v->integer(Bounds::at_least(0));
     if (auto v = c.get("max_distance")) integrator.max_distance = v->number_f(Bounds::above(0));
     if (auto v = c.get("mis")) integrator.mis = v->boolean();
+    if (auto v = c.get("spectral")) integrator.spectral = v->boolean();
     if (auto v = c.get("rr")) integrator.rr_probability = v->number_f(Bounds{0.0, 1.0, true, false});
     if (auto v = c.get("light_selection"))
         integrator.light_selection =

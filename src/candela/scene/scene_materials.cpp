@@ -2,6 +2,7 @@
 // lobe_params.h), whose colours and numbers may be textures (scene_textures.cpp).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string_view>
@@ -9,6 +10,7 @@
 
 #include "candela/scene/enum_names.h"
 #include "candela/scene/scene_sections.h"
+#include "candela/scene/scene_spectra.h"
 
 namespace candela {
 
@@ -74,6 +76,21 @@ LobeParams read_conductor(JsonCursor& c, Scene& scene) {
                            read_color_param(*k, scene, Bounds::at_least(0)), roughness, multiscatter};
 }
 
+// An index of refraction: a number, or a spectrum (a glass that disperses, e.g.
+// {"spectrum": "glass-BK7"}). A spectrum is kept for spectral mode (`spectrum` gets its index in
+// the scene's textures) and the number returned is its value at the d line, 587.6 nm, the index a
+// glass catalogue quotes, which RGB mode uses. A constant spectrum is just that number.
+float read_ior(const JsonCursor& v, Scene& scene, uint32_t& spectrum) {
+    std::optional<DenseSpectrum> s = read_spectrum(v, scene.file.parent_path());
+    if (!s) return v.number_f(Bounds::above(0));
+    for (float x : s->v)
+        if (!(x > 0.0f)) v.fail(fmt::format("an index of refraction must be > 0 at every wavelength, got {}", x));
+    const float d_line = (*s)(587.6f);
+    if (std::all_of(s->v.begin(), s->v.end(), [&](float x) { return x == s->v[0]; })) return d_line;
+    spectrum = scene.textures.add_spectrum(*s);
+    return d_line;
+}
+
 // What both coated materials share: the coat (its roughness under `roughness_key`) and the
 // medium beneath it. pbrt-v4's names: uroughness/vroughness (or interface.*), eta (or
 // interface.eta), thickness, albedo, g, maxdepth, nsamples.
@@ -130,11 +147,20 @@ LobeParams read_lobe(JsonCursor& c, std::string_view type, Scene& scene) {
     }
     if (type == "conductor") return read_conductor(c, scene);
     float ior = 1.5f;
-    if (auto v = c.get("ior")) ior = v->number_f(Bounds::above(0));
-    if (type == "thin_dielectric") return ThinDielectricParams{ior};
+    uint32_t ior_spectrum = kNoSpectrum;
+    if (auto v = c.get("ior")) ior = read_ior(*v, scene, ior_spectrum);
+    if (type == "thin_dielectric") {
+        ThinDielectricParams p{ior};
+        p.ior_spectrum = ior_spectrum;
+        return p;
+    }
     ColorParam tint{Rgb(1.0f)};
     if (auto v = c.get("tint")) tint = read_color_param(*v, scene, kReflectance);
-    if (type == "transmission") return TransmissionParams{ior, tint};
+    if (type == "transmission") {
+        TransmissionParams p{ior, tint};
+        p.ior_spectrum = ior_spectrum;
+        return p;
+    }
     std::optional<JsonCursor> fresnel = c.get("fresnel");
     bool schlick = fresnel && fresnel->choice("fresnel", kFresnelNames) == "schlick";
     RoughnessParams roughness;
@@ -142,9 +168,15 @@ LobeParams read_lobe(JsonCursor& c, std::string_view type, Scene& scene) {
     // Smooth glass loses nothing between microfacets: multiscatter changes nothing there.
     const bool multiscatter = read_multiscatter(c);
     // Roughness 0 keeps the smooth lobe of version 1 (and its images, bit for bit).
-    if (is_zero(roughness)) return DielectricParams{ior, tint, schlick};
+    if (is_zero(roughness)) {
+        DielectricParams p{ior, tint, schlick};
+        p.ior_spectrum = ior_spectrum;
+        return p;
+    }
     if (schlick) fresnel->fail("fresnel \"schlick\" is for a smooth dielectric (roughness 0)");
-    return RoughDielectricParams{ior, tint, roughness, multiscatter};
+    RoughDielectricParams p{ior, tint, roughness, multiscatter};
+    p.ior_spectrum = ior_spectrum;
+    return p;
 }
 
 // `mix`: 1 to Bsdf::kMaxLobes materials of the other types, their lobes in one material. Mixes do

@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "candela/scene/scene_sections.h"
+#include "candela/scene/scene_spectra.h"
+#include "candela/spectrum/spectrum_rgb.h"
 
 namespace candela {
 
@@ -54,10 +56,24 @@ class TextureReader {
             if (section_[i].state == Named::kUnread) read_named(i, section_[i].cursor);
     }
 
+    // A colour: RGB, a texture, or a spectrum (scene_spectra.h). A value bounded by 1 is a
+    // reflectance and becomes a spectrum in spectral mode by the albedo form, any other by the
+    // unbounded form (pbrt-v4's SpectrumType). A spectrum is kept for spectral mode and reduced
+    // to RGB (spectrum_rgb.h) for RGB mode.
     ColorParam color_param(JsonCursor c, const Bounds& bounds) {
-        if (!c.is_object()) return ColorParam{c.colour(bounds)};
+        const SpectrumForm form = bounds.hi <= 1.0 ? SpectrumForm::kAlbedo : SpectrumForm::kUnbounded;
+        if (!c.is_object()) return ColorParam{c.colour(bounds), kNoTexture, -kUnbounded, kUnbounded, form};
+        if (std::optional<DenseSpectrum> s = read_spectrum(c, scene_.file.parent_path())) {
+            for (float v : s->v)
+                if (!(double(v) >= bounds.lo && double(v) <= bounds.hi))
+                    c.fail(fmt::format("a spectrum value {} is outside this colour's range [{}, {}]", v, bounds.lo,
+                                       bounds.hi));
+            ColorParam p{reflectance_rgb(*s), kNoTexture, -kUnbounded, kUnbounded, form};
+            p.spectrum = scene_.textures.add_spectrum(*s);
+            return p;
+        }
         const auto [lo, hi] = clamp_range(bounds);
-        return ColorParam{Rgb(placeholder(lo, hi)), texture_of(c), lo, hi};
+        return ColorParam{Rgb(placeholder(lo, hi)), texture_of(c), lo, hi, form};
     }
 
     FloatParam float_param(JsonCursor c, const Bounds& bounds) {

@@ -20,15 +20,16 @@ inline constexpr int kDenseSamples = kDenseLambdaMax - kDenseLambdaMin + 1;
 struct DenseSpectrum {
     std::array<float, kDenseSamples> v{};
 
-    // The value at the nearest tabulated nm; 0 outside [360, 830].
+    // The value at the nearest tabulated nm; 0 outside [360, 830]. (int(lambda + 0.5) is
+    // lround for the wavelengths that can be inside, and compiles inline; lroundf is a call.)
     CANDELA_HD float operator()(float lambda) const {
-        const long i = std::lround(lambda) - kDenseLambdaMin;
+        const int i = int(lambda + 0.5f) - kDenseLambdaMin;
         return i < 0 || i >= kDenseSamples ? 0.0f : v[size_t(i)];
     }
     // The values at a path's four wavelengths.
     CANDELA_HD Color eval(const Color& lambda) const {
         Color c;
-        for (int i = 0; i < kColorChannels; ++i) c[i] = (*this)(lambda[i]);
+        for (int i = 0; i < kColorChannels; ++i) c.set(i, (*this)(lambda[i]));
         return c;
     }
     float max_value() const {

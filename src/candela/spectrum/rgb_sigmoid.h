@@ -33,16 +33,12 @@ struct RgbSigmoid {
     // The spectrum's value at lambda (nm), in [0, 1].
     CANDELA_HD float operator()(float lambda_nm) const { return rgb_sigmoid_s(polynomial(lambda_nm)); }
     // The values at a path's four wavelengths: rgb_sigmoid_s's operations in the same order,
-    // so the same bits, written on whole Colors because GCC vectorizes those (one sqrtps, one
-    // divps) and not four calls of the scalar function.
+    // so the same bits, written on whole Colors (one divps; the square roots per channel).
     CANDELA_HD Color eval(const Color& lambda) const {
         const Color x = (lambda * c0 + Color(c1)) * lambda + Color(c2);
-        Color r, abs_x, positive;
-        for (int i = 0; i < kColorChannels; ++i) {
-            r[i] = std::sqrt(1.0f + x[i] * x[i]);
-            abs_x[i] = std::abs(x[i]);
-            positive[i] = x[i] < 0.0f ? 0.0f : 1.0f;
-        }
+        const Color r = map_channels(Color(1.0f) + x * x, [](float v) { return std::sqrt(v); });
+        const Color abs_x = map_channels(x, [](float v) { return std::abs(v); });
+        const Color positive = map_channels(x, [](float v) { return v < 0.0f ? 0.0f : 1.0f; });
         const Color q = Color(1.0f) / (Color(2.0f) * r * (r + abs_x));
         return (Color(1.0f) - positive) * q + positive * (Color(1.0f) - q);
     }

@@ -36,8 +36,8 @@ struct SampledWavelengths {
         for (int i = 0; i < kColorChannels; ++i) {
             float up = u + float(i) / float(kColorChannels);
             if (up > 1.0f) up -= 1.0f;
-            w.lambda[i] = sample_visible_wavelength(up);
-            w.pdf[i] = visible_wavelength_pdf(w.lambda[i]);
+            w.lambda.set(i, sample_visible_wavelength(up));
+            w.pdf.set(i, visible_wavelength_pdf(w.lambda[i]));
         }
         return w;
     }
@@ -47,8 +47,8 @@ struct SampledWavelengths {
     // divided by 4 because it now stands for all four samples (pbrt-v4's TerminateSecondary).
     CANDELA_HD void terminate_secondary() {
         if (secondary_terminated()) return;
-        for (int i = 1; i < kColorChannels; ++i) pdf[i] = 0.0f;
-        pdf[0] /= float(kColorChannels);
+        for (int i = 1; i < kColorChannels; ++i) pdf.set(i, 0.0f);
+        pdf.set(0, pdf[0] / float(kColorChannels));
     }
     CANDELA_HD bool secondary_terminated() const {
         for (int i = 1; i < kColorChannels; ++i)

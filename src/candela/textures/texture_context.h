@@ -1,5 +1,6 @@
 #pragma once
 // Where a texture is looked up: the shading point's surface coordinates and position.
+#include "candela/math/color.h"
 #include "candela/math/vec.h"
 
 namespace candela {
@@ -7,6 +8,9 @@ namespace candela {
 struct TextureContext {
     Vec2f uv;  // the surface's (u, v) (Accelerator::uv): v grows upward, as in OBJ and pbrt
     Vec3f p;   // world position
+    // Spectral mode: the path's four wavelengths (nm), at which colours are evaluated; null in
+    // RGB mode.
+    const Color* lambda = nullptr;
 };
 
 }  // namespace candela

@@ -10,6 +10,7 @@
 #include "candela/core/check.h"
 #include "candela/core/platform.h"
 #include "candela/core/variant.h"
+#include "candela/spectrum/dense_spectrum.h"
 #include "candela/textures/texture_context.h"
 #include "candela/textures/texture_image.h"
 #include "candela/textures/texture_kinds.h"
@@ -36,8 +37,16 @@ class TextureSet {
         const float v = number(p.texture, ctx);
         return v < p.lo ? p.lo : (v > p.hi ? p.hi : v);
     }
+    // In spectral mode (ctx.lambda set) the colour at the path's wavelengths: the parameter's
+    // tabulated spectrum, its constant's uplift, or its texture's RGB uplifted here.
     CANDELA_HD Color eval(const ColorParam& p, const TextureContext& ctx) const {
+        if (ctx.lambda) return eval_spectral(p, *ctx.lambda, ctx);
         return from_rgb(rgb(p, ctx));
+    }
+    CANDELA_HD Color eval_spectral(const ColorParam& p, const Color& lambda, const TextureContext& ctx) const {
+        if (p.spectrum != kNoSpectrum) return spectra_[p.spectrum].eval(lambda);
+        if (!holds(p.texture)) return p.spectral.eval(lambda);
+        return uplift(rgb(p, ctx), p.form).eval(lambda);
     }
     // The parameter's RGB value at ctx (texture inputs are RGB in both modes).
     CANDELA_HD Rgb rgb(const ColorParam& p, const TextureContext& ctx) const {
@@ -67,6 +76,13 @@ class TextureSet {
     }
 
     CANDELA_HD const Texture& texture(uint32_t i) const { return textures_[i]; }
+    // Tabulated spectrum i (named, listed, read from a file or a blackbody), for spectral mode.
+    CANDELA_HD const DenseSpectrum& spectrum(uint32_t i) const { return spectra_[i]; }
+    size_t spectrum_count() const { return spectra_.size(); }
+    uint32_t add_spectrum(const DenseSpectrum& s) {
+        spectra_.push_back(s);
+        return uint32_t(spectra_.size() - 1);
+    }
     CANDELA_HD const TextureImage& image(uint32_t i) const { return images_[i]; }
     // Texture i's nesting depth: 1 plus the largest depth of its inputs.
     int depth(uint32_t i) const { return depths_[i]; }
@@ -107,6 +123,7 @@ class TextureSet {
     std::vector<Texture> textures_;
     std::vector<int> depths_;  // parallel to textures_
     std::vector<TextureImage> images_;
+    std::vector<DenseSpectrum> spectra_;
 };
 
 static_assert(TextureKind<ConstantTexture, TextureSet>);
