@@ -25,7 +25,7 @@ std::vector<std::filesystem::path> example_scenes() {
 
 TEST(ExampleScenes, EveryExampleSceneLoadsCleanlyAndRenders) {
     const std::vector<std::filesystem::path> scenes = example_scenes();
-    ASSERT_GE(scenes.size(), 9u);  // the five of version 1, material-spheres, veach-mis, depth-of-field, cornell-box-pbrt
+    ASSERT_GE(scenes.size(), 10u);  // the five of version 1, material-spheres, veach-mis, depth-of-field, cornell-box-pbrt, prism
     for (const std::filesystem::path& file : scenes) {
         SCOPED_TRACE(file.string());
         Scene scene = load_scene(file);
