@@ -13,6 +13,7 @@
 
 #include "candela/image/image_io.h"
 #include "candela/scene/scene_sections.h"
+#include "candela/scene/scene_spectra.h"
 
 namespace candela {
 
@@ -85,22 +86,35 @@ std::optional<std::string> why_dark(const EnvironmentSettings& env, bool from_fi
     return from_file ? "its image is black" : "its color is 0";
 }
 
-// The colour and power keys every delta light shares: the colour `key` (default 1, white),
-// `scale` and `power`. The colour comes back multiplied by `scale`; `power` (W) is read as is.
+// The colour and power keys every delta light shares: the colour `key` (default 1, white; RGB
+// or a spectrum, normalized to luminance 1 as pbrt-v4 does), `scale` and `power`. The colour
+// comes back multiplied by `scale`; `power` (W) is read as is. A spectrum comes back normalized,
+// its factor in spectrum_scale (so far `scale`): spectral mode multiplies it by the same factors
+// as RGB mode's colour, so both modes emit the same luminance.
 struct DeltaEmission {
     Color color{1.0f};
     std::optional<float> power;
     std::string why_dark;  // empty when the light emits; else what makes it dark
+    std::optional<DenseSpectrum> spectrum;
+    float spectrum_scale = 1.0f;
 };
 
-DeltaEmission read_delta_emission(JsonCursor& c, std::string_view key) {
+DeltaEmission read_delta_emission(JsonCursor& c, std::string_view key, const Scene& scene) {
     DeltaEmission e;
     std::optional<JsonCursor> color = c.get(key);
-    if (color) e.color = from_rgb(color->colour(Bounds::at_least(0)));
+    if (color) {
+        if (std::optional<LightSpectrum> s = read_light_spectrum(*color, scene.file.parent_path())) {
+            e.color = from_rgb(s->rgb);
+            e.spectrum = s->normalized;
+        } else {
+            e.color = from_rgb(color->colour(Bounds::at_least(0)));
+        }
+    }
     float scale = 1.0f;
     if (auto v = c.get("scale")) scale = v->number_f(Bounds::at_least(0));
     if (auto v = c.get("power")) e.power = v->number_f(Bounds::at_least(0));
     e.color *= scale;
+    e.spectrum_scale = scale;
     if (e.power && *e.power == 0.0f)
         e.why_dark = "its power is 0";
     else if (scale == 0.0f)
@@ -112,19 +126,25 @@ DeltaEmission read_delta_emission(JsonCursor& c, std::string_view key) {
 
 // pbrt-v4's `power` normalization (lights.cpp, PointLight::Create and SpotLight::Create): the
 // colour (times scale) is multiplied by power / k_e, k_e the power of a light of unit intensity.
-// As in pbrt-v4, the colour is not divided by its own luminance: a white [1, 1, 1] light emits
-// exactly `power` watts, a coloured one that times its colour.
-Color intensity_for(const DeltaEmission& e, float power_per_intensity, JsonCursor& c) {
+// As in pbrt-v4, an RGB colour is not divided by its own luminance: a white [1, 1, 1] light
+// emits exactly `power` watts, a coloured one that times its colour; a spectrum, already at
+// luminance 1, emits `power` watts of light whatever its colour.
+Color intensity_for(DeltaEmission& e, float power_per_intensity, JsonCursor& c) {
     if (!e.color.is_finite()) c.get("scale")->fail("the light's intensity overflows float range");
-    Color intensity = e.power ? e.color * (*e.power / power_per_intensity) : e.color;
+    Color intensity = e.color;
+    if (e.power) {
+        const float factor = *e.power / power_per_intensity;
+        intensity = e.color * factor;
+        e.spectrum_scale *= factor;
+    }
     if (!intensity.is_finite()) c.get("power")->fail("the light's intensity overflows float range");
     return intensity;
 }
 
-PointLight read_point(JsonCursor& c, DeltaEmission& e) {
+PointLight read_point(JsonCursor& c, DeltaEmission& e, const Scene& scene) {
     PointLight light;
     light.position = c.require("position").vec3f();
-    e = read_delta_emission(c, "intensity");
+    e = read_delta_emission(c, "intensity", scene);
     light.intensity = intensity_for(e, PointLight::power_per_intensity(), c);
     return light;
 }
@@ -134,7 +154,7 @@ PointLight read_point(JsonCursor& c, DeltaEmission& e) {
 // coneangle and conedeltaangle, whose light starts to fall off at coneangle - conedeltaangle. A
 // cone_delta beyond cone_angle would start the falloff at a negative angle, which pbrt-v4 reads
 // as the same positive one: refused instead.
-SpotLight read_spot(JsonCursor& c, DeltaEmission& e) {
+SpotLight read_spot(JsonCursor& c, DeltaEmission& e, const Scene& scene) {
     SpotLight light;
     JsonCursor position = c.require("position"), look_at = c.require("look_at");
     light.position = position.vec3f();
@@ -156,19 +176,19 @@ SpotLight read_spot(JsonCursor& c, DeltaEmission& e) {
     }
     light.cos_falloff_end = std::cos(radians(cone_angle));
     light.cos_falloff_start = std::cos(radians(cone_angle - cone_delta));
-    e = read_delta_emission(c, "intensity");
+    e = read_delta_emission(c, "intensity", scene);
     light.intensity =
         intensity_for(e, SpotLight::power_per_intensity(light.cos_falloff_start, light.cos_falloff_end), c);
     return light;
 }
 
-DirectionalLight read_directional(JsonCursor& c, DeltaEmission& e) {
+DirectionalLight read_directional(JsonCursor& c, DeltaEmission& e, const Scene& scene) {
     DirectionalLight light;
     JsonCursor direction = c.require("direction");
     Vec3d d = direction.vec3();
     if (!is_finite(normalize(d))) direction.fail_expected("a nonzero direction");
     light.direction = Vec3f(normalize(d));
-    e = read_delta_emission(c, "irradiance");
+    e = read_delta_emission(c, "irradiance", scene);
     // With `power`, the irradiance waits for the scene's size (DeltaLightSettings).
     light.irradiance = e.color;
     if (!light.irradiance.is_finite()) c.get("scale")->fail("the light's irradiance overflows float range");
@@ -180,17 +200,21 @@ std::optional<DeltaLightSettings> read_delta_light(JsonCursor& c, std::string_vi
     DeltaEmission e;
     DeltaLightSettings settings;
     if (type == "point") {
-        settings.light = read_point(c, e);
+        settings.light = read_point(c, e, scene);
     } else if (type == "spot") {
-        settings.light = read_spot(c, e);
+        settings.light = read_spot(c, e, scene);
     } else {
-        settings.light = read_directional(c, e);
+        settings.light = read_directional(c, e, scene);
         settings.directional_power = e.power;
     }
     c.reject_unknown_keys();
     if (!e.why_dark.empty()) {
         add_warning(scene, c, fmt::format("the {} light emits nothing ({}); it is ignored", type, e.why_dark));
         return std::nullopt;
+    }
+    if (e.spectrum) {
+        settings.spectrum = scene.textures.add_spectrum(*e.spectrum);
+        settings.spectrum_scale = e.spectrum_scale;
     }
     // BSDF sampling alone finds light by hitting it, and nothing hits a point or a direction: the
     // image would be rendered without this light, so the scene is refused (pbrt-v4 renders it

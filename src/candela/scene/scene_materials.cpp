@@ -11,6 +11,7 @@
 #include "candela/scene/enum_names.h"
 #include "candela/scene/scene_sections.h"
 #include "candela/scene/scene_spectra.h"
+#include "candela/spectrum/named_spectra.h"
 
 namespace candela {
 
@@ -62,8 +63,19 @@ LobeParams read_conductor(JsonCursor& c, Scene& scene) {
         if (eta || k || reflectance)
             (eta ? *eta : k ? *k : *reflectance)
                 .fail("give one of \"metal\", \"eta\" and \"k\", or \"reflectance\"");
-        const MetalIor& ior = metal_ior(*parse_metal(metal->choice("metal", metal_names())));
-        return ConductorParams{ColorParam{ior.eta}, ColorParam{ior.k}, roughness, multiscatter};
+        const std::string_view symbol = metal->choice("metal", metal_names());
+        const MetalIor& ior = metal_ior(*parse_metal(symbol));
+        ColorParam eta_param{ior.eta, kNoTexture, -kUnbounded, kUnbounded, SpectrumForm::kUnbounded};
+        ColorParam k_param{ior.k, kNoTexture, -kUnbounded, kUnbounded, SpectrumForm::kUnbounded};
+        // Spectral mode uses the measured spectra where pbrt-v4 names them (metal-Au-eta, ...);
+        // RGB mode, and spectral mode for a metal without them (Cr, Fe, Ti), the RGB table.
+        const DenseSpectrum* eta_spectrum = named_spectrum(fmt::format("metal-{}-eta", symbol));
+        const DenseSpectrum* k_spectrum = named_spectrum(fmt::format("metal-{}-k", symbol));
+        if (eta_spectrum && k_spectrum) {
+            eta_param.spectrum = scene.textures.add_spectrum(*eta_spectrum);
+            k_param.spectrum = scene.textures.add_spectrum(*k_spectrum);
+        }
+        return ConductorParams{eta_param, k_param, roughness, multiscatter};
     }
     if (reflectance) {
         if (eta || k)

@@ -12,6 +12,7 @@
 #include "candela/scene/enum_names.h"
 #include "candela/scene/mesh_loader.h"
 #include "candela/scene/scene_sections.h"
+#include "candela/scene/scene_spectra.h"
 
 namespace candela {
 
@@ -143,8 +144,22 @@ void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene,
     std::string_view type = c.require("type").choice("shape type", kShapeTypes);
     Shape shape;
     shape.material = material_index(c.require("material"), scene);
+    std::optional<JsonCursor> emission_scale = c.get("emission_scale");
     if (auto v = c.get("emission")) {
-        shape.emission = v->colour(Bounds::at_least(0));
+        // pbrt-v4's area light: its `L` (RGB, or a spectrum normalized to luminance 1) times
+        // its `scale`.
+        std::optional<LightSpectrum> spectrum = read_light_spectrum(*v, scene.file.parent_path());
+        shape.emission = spectrum ? spectrum->rgb : v->colour(Bounds::at_least(0));
+        float scale = 1.0f;
+        if (emission_scale) {
+            scale = emission_scale->number_f(Bounds::above(0));
+            shape.emission *= scale;
+            if (!shape.emission.is_finite()) emission_scale->fail("the emission overflows float range");
+        }
+        if (spectrum && !shape.emission.is_black()) {
+            spectrum->normalized *= scale;
+            shape.emission_spectrum = scene.textures.add_spectrum(spectrum->normalized);
+        }
         // Zero is the default, so stating it is likely a light switched off or a mistake.
         if (shape.emission.is_black())
             add_warning(scene, *v,
@@ -155,6 +170,8 @@ void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene,
         else if (scene.materials[shape.material].surface.cuts_out())
             v->fail(fmt::format("a light cannot be cut out: its material {} has alpha < 1",
                                 json_quoted(scene.material_names[shape.material])));
+    } else if (emission_scale) {
+        emission_scale->fail("emission_scale without emission: the shape is not a light");
     }
     if (auto v = c.get("two_sided")) shape.two_sided = v->boolean();
     bool reverse_orientation = false;

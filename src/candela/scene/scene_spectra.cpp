@@ -22,6 +22,7 @@
 #include "candela/scene/scene_sections.h"
 #include "candela/spectrum/blackbody.h"
 #include "candela/spectrum/named_spectra.h"
+#include "candela/spectrum/spectrum_rgb.h"
 
 namespace candela {
 
@@ -158,6 +159,22 @@ std::optional<DenseSpectrum> read_spectrum(const JsonCursor& c, const std::files
     }
     o.reject_unknown_keys();
     return s;
+}
+
+std::optional<LightSpectrum> read_light_spectrum(const JsonCursor& c, const std::filesystem::path& scene_dir) {
+    std::optional<DenseSpectrum> s = read_spectrum(c, scene_dir);
+    if (!s) return std::nullopt;
+    for (float v : s->v)
+        if (!(v >= 0.0f)) c.fail(fmt::format("a light's spectrum must be >= 0 at every wavelength, got {}", v));
+    LightSpectrum light;
+    const double y = spectrum_to_xyz(*s).y;
+    if (!(y > 0.0)) return light;
+    light.normalized = *s;
+    light.normalized *= float(1.0 / y);
+    const Rgb rgb = emission_rgb(*s);
+    // Its luminance, a positive sum of the channels, is 1: one channel at least stays above 0.
+    light.rgb = Rgb(std::max(rgb.r, 0.0f), std::max(rgb.g, 0.0f), std::max(rgb.b, 0.0f));
+    return light;
 }
 
 }  // namespace candela

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "candela/math/rgb.h"
 #include "candela/scene/json_cursor.h"
 #include "candela/spectrum/dense_spectrum.h"
 
@@ -20,5 +21,20 @@ namespace candela {
 // range. Throws SceneError for a form written wrong: located at the value in the scene file, or
 // at file:line in a spectrum file (with the scene location that names the file).
 std::optional<DenseSpectrum> read_spectrum(const JsonCursor& c, const std::filesystem::path& scene_dir);
+
+// A light's colour given as a spectrum, as pbrt-v4 takes it (lights.cpp: `scale /=
+// SpectrumToPhotometric(L)`): normalized to luminance Y = 1, so that the light's scale or power
+// alone sets its brightness and the spectrum only its colour.
+struct LightSpectrum {
+    DenseSpectrum normalized;  // Y = 1; all 0 when the spectrum has no luminance
+    // RGB mode's colour: the linear sRGB of `normalized` (emission_rgb), a colour outside the
+    // sRGB gamut clipped to 0 per channel (a negative emission has no meaning in RGB transport).
+    // Black exactly when the spectrum has no luminance.
+    Rgb rgb;
+};
+
+// read_spectrum for a light's colour: nullopt when `c` is no spectrum (the caller reads RGB).
+// Every value must be >= 0 (a located SceneError otherwise).
+std::optional<LightSpectrum> read_light_spectrum(const JsonCursor& c, const std::filesystem::path& scene_dir);
 
 }  // namespace candela
