@@ -142,7 +142,7 @@ const BadInput kBadInputs[] = {
     {"near_miss_top_level_key.json", kUnknownName, kError, "", 2, 3, "",
      "unknown key \"materails\" (did you mean \"materials\"?)"},
     {"sphere_with_transform.json", kUnknownName, kError, "", 5, 6, "/shapes/0",
-     "unknown key \"transform\"; expected one of: center, emission, material, radius, reverse_orientation, two_sided, type"},
+     "unknown key \"transform\"; expected one of: center, emission, emission_scale, material, radius, reverse_orientation, two_sided, type"},
     {"string_with_braces_before_error.json", kUnknownName, kError, "", 4, 51, "/materials/}{",
      "unknown key \"ior\"; expected one of: albedo, alpha, bump_map, normal_map, normal_map_convention, type"},
     {"transform_unknown_step.json", kUnknownName, kError, "", 5, 42, "/shapes/0/transform/0",
