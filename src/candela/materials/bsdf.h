@@ -18,8 +18,14 @@ namespace candela {
 
 struct Bsdf {
     static constexpr uint32_t kMaxLobes = 4;
-    std::array<BsdfLobe, kMaxLobes> lobes{};
+    // Each variant holds a default LambertianLobe (a variant always value-initializes its first
+    // alternative). The constructor is user-provided so that value-initialization
+    // (optional::emplace()) does not first zero all 416 bytes, which the per-hit BSDF of
+    // spectral mode would pay at every vertex (4% of a spectral Cornell box).
+    std::array<BsdfLobe, kMaxLobes> lobes;
     uint32_t lobe_count = 0;
+
+    CANDELA_HD Bsdf() {}
 
     // Sum of the lobes' f (delta lobes contribute 0).
     CANDELA_HD Color eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const;

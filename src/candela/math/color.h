@@ -110,6 +110,17 @@ CANDELA_HD inline Color map_channels(const Color& a, const Color& b, F&& f) {
 CANDELA_HD inline Color safe_div(const Color& a, const Color& b) {
     return map_channels(a, b, [](float x, float y) { return y != 0.0f ? x / y : 0.0f; });
 }
+// The square root of every channel, which must be >= 0: one sqrtps where the compiler targets
+// SSE (correctly rounded, the same bits as std::sqrt per channel), else per channel.
+CANDELA_HD inline Color sqrt_nonnegative_channels(const Color& x) {
+#if defined(__SSE__) && !defined(__CUDA_ARCH__)
+    Color r;
+    r.c = __builtin_ia32_sqrtps(x.c);
+    return r;
+#else
+    return map_channels(x, [](float v) { return std::sqrt(v); });
+#endif
+}
 CANDELA_HD inline Color sqrt_channels(const Color& x) {
     return map_channels(x, [](float v) { return std::sqrt(v > 0.0f ? v : 0.0f); });
 }

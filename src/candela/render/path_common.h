@@ -56,7 +56,9 @@ struct PathVertex {
     const Bsdf& spectral_bsdf(const Scene& scene, const Accelerator& accel, const Material& m, SampledWavelengths& w) {
         if (m.dispersive) w.terminate_secondary();
         const Vec2f uv = m.textured ? accel.uv(hit) : Vec2f();
-        return textured_bsdf.emplace(build_bsdf(m, scene.textures, TextureContext{uv, hit.p, &w.lambda}));
+        Bsdf& b = textured_bsdf.emplace();
+        build_bsdf_into(b, m, scene.textures, TextureContext{uv, hit.p, &w.lambda});
+        return b;
     }
     const Bsdf& per_hit_bsdf(const Scene& scene, const Accelerator& accel, const Material& m) {
         if (!m.textured) return m.bsdf;

@@ -38,11 +38,12 @@ void add_file_bytes(Hash64& hash, const fs::path& file) {
     if (in.bad()) fail(file, "cannot read for the scene's content hash");
 }
 
-// Every string under a "file" key, depth first in the canonical key order.
+// Every string under a "file" key (meshes, images) or a "spectrum_file" key (.spd spectra),
+// depth first in the canonical key order.
 void add_referenced_files(Hash64& hash, const Json& value, const fs::path& folder) {
     if (value.is_object()) {
         for (const auto& [key, member] : value.items()) {
-            if (key == "file" && member.is_string()) {
+            if ((key == "file" || key == "spectrum_file") && member.is_string()) {
                 const std::string name = member.get<std::string>();
                 hash.add_field(name);
                 add_file_bytes(hash, folder / fs::path(name));  // an absolute name stays as it is

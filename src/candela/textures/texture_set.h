@@ -40,10 +40,15 @@ class TextureSet {
     // In spectral mode (ctx.lambda set) the colour at the path's wavelengths: the parameter's
     // tabulated spectrum, its constant's uplift, or its texture's RGB uplifted here.
     CANDELA_HD Color eval(const ColorParam& p, const TextureContext& ctx) const {
-        if (ctx.lambda) return eval_spectral(p, *ctx.lambda, ctx);
+        if (ctx.lambda) {
+            // The common case inline: a constant's uplift prepared at load.
+            if (p.spectrum == kNoSpectrum && !holds(p.texture)) return p.spectral.eval(*ctx.lambda);
+            return eval_spectral(p, *ctx.lambda, ctx);
+        }
         return from_rgb(rgb(p, ctx));
     }
-    CANDELA_HD Color eval_spectral(const ColorParam& p, const Color& lambda, const TextureContext& ctx) const {
+    [[gnu::noinline]] CANDELA_HD Color eval_spectral(const ColorParam& p, const Color& lambda,
+                                                     const TextureContext& ctx) const {
         if (p.spectrum != kNoSpectrum) return spectra_[p.spectrum].eval(lambda);
         if (!holds(p.texture)) return p.spectral.eval(lambda);
         return uplift(rgb(p, ctx), p.form).eval(lambda);
