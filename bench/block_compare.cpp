@@ -79,4 +79,21 @@ bool within_bounds(const BlockComparison& c, double max_mean_bias, double max_p9
     return c.p95 <= max_p95;
 }
 
+Image block_means(const Image& image, int block) {
+    if (block < 1 || block > image.width || block > image.height)
+        throw std::runtime_error("block_means: the block is larger than the image");
+    Image means(image.width / block, image.height / block);
+    for (int by = 0; by < means.height; ++by) {
+        for (int bx = 0; bx < means.width; ++bx) {
+            double sum[3] = {0.0, 0.0, 0.0};
+            for (int y = by * block; y < (by + 1) * block; ++y)
+                for (int x = bx * block; x < (bx + 1) * block; ++x)
+                    for (int c = 0; c < 3; ++c) sum[c] += double(image.at(x, y)[c]);
+            const double n = double(block) * double(block);
+            means.at(bx, by) = Rgb(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n));
+        }
+    }
+    return means;
+}
+
 }  // namespace candela::bench

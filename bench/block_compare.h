@@ -33,6 +33,11 @@ double quantile(std::vector<double> values, double q);
 // reference whose sum in a channel is 0.
 BlockComparison compare_blocks(const Image& test, const Image& ref, int block = 16, double dark_fraction = 0.05);
 
+// The image of `block` x `block` pixel means (whole blocks only): what compare_blocks reads of a
+// reference, so a reference can be stored this small (tests/data/refs/) and compared with
+// compare_blocks(block_means(test, block), stored, 1).
+Image block_means(const Image& image, int block);
+
 // Whether every channel's |mean_ratio - 1| is at most max_mean_bias and p95 at most max_p95.
 bool within_bounds(const BlockComparison& c, double max_mean_bias, double max_p95);
 

@@ -4,6 +4,8 @@
 // blocks' relative luminance differences, blocks darker than 5% of the median block left out.
 // With --bounds (scenes.txt's two columns), exits 1 when a channel's |ratio - 1| exceeds MEAN or
 // the block p95 exceeds P95; 2 for usage or file errors.
+// candela_compare_pbrt --write-block-means IMAGE OUT.exr writes IMAGE's 16x16-block means, all
+// the comparison reads of a reference: how tests/data/refs/ holds pbrt-v4's images small.
 #include <fmt/format.h>
 
 #include <cstdio>
@@ -14,6 +16,16 @@
 #include "candela/image/image_io.h"
 
 int main(int argc, char** argv) {
+    if (argc == 4 && std::string(argv[1]) == "--write-block-means") {
+        try {
+            candela::write_image(argv[3], candela::bench::block_means(candela::read_image(argv[2]), 16),
+                                 candela::FilmSettings{});
+            return 0;
+        } catch (const std::exception& e) {
+            fmt::print(stderr, "candela_compare_pbrt: {}\n", e.what());
+            return 2;
+        }
+    }
     std::string test_file, ref_file;
     double max_mean_bias = -1.0, max_p95 = -1.0;
     bool usage_error = false;

@@ -139,3 +139,28 @@ TEST(BlockCompare, RefusesImagesOfDifferentSizesOrABlackReferenceChannel) {
 
 }  // namespace
 }  // namespace candela::bench
+
+namespace candela::bench {
+namespace {
+
+// block_means keeps what compare_blocks reads: comparing the means with block 1 gives the same
+// figures as comparing the images with block 16.
+TEST(BlockMeans, ComparisonOfMeansEqualsComparisonOfImages) {
+    Image a(32, 48), b(32, 48);
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 32; ++x) {
+            a.at(x, y) = Rgb(0.1f + 0.01f * float(x), 0.2f + 0.003f * float(y), 0.5f);
+            b.at(x, y) = Rgb(0.1f + 0.011f * float(x), 0.2f + 0.0031f * float(y), 0.45f + 0.001f * float(x + y));
+        }
+    const BlockComparison full = compare_blocks(a, b, 16);
+    const BlockComparison means = compare_blocks(block_means(a, 16), block_means(b, 16), 1);
+    EXPECT_EQ(means.blocks_total, full.blocks_total);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(means.mean_ratio[size_t(c)], full.mean_ratio[size_t(c)], 1e-6);
+    EXPECT_NEAR(means.p95, full.p95, 1e-6);
+    EXPECT_NEAR(means.max, full.max, 1e-6);
+    EXPECT_EQ(block_means(a, 16).width, 2);
+    EXPECT_EQ(block_means(a, 16).height, 3);
+}
+
+}  // namespace
+}  // namespace candela::bench
