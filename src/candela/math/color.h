@@ -44,7 +44,7 @@ struct Color {
         return x;
     }
 
-    CANDELA_HD constexpr float operator[](int i) const { return c[i]; }
+    CANDELA_HD float operator[](int i) const { return c[i]; }
     CANDELA_HD void set(int i, float v) { c[i] = v; }
 
 #define CANDELA_COLOR_OP(OP)                                                                      \
@@ -72,14 +72,14 @@ struct Color {
     CANDELA_COLOR_OP(/)
 #undef CANDELA_COLOR_OP
 
-    CANDELA_HD constexpr bool operator==(const Color& o) const {
+    CANDELA_HD bool operator==(const Color& o) const {
         return c[0] == o.c[0] && c[1] == o.c[1] && c[2] == o.c[2] && c[3] == o.c[3];
     }
 
-    CANDELA_HD constexpr bool is_black() const {
+    CANDELA_HD bool is_black() const {
         return c[0] == 0.0f && c[1] == 0.0f && c[2] == 0.0f && c[3] == 0.0f;
     }
-    CANDELA_HD constexpr float max_component() const {
+    CANDELA_HD float max_component() const {
         float a = c[0] > c[1] ? c[0] : c[1];  // a tree of maxss, no branch
         float b = c[2] > c[3] ? c[2] : c[3];
         return a > b ? a : b;
@@ -93,7 +93,7 @@ CANDELA_HD constexpr Color operator*(float s, const Color& x) { return x * s; }
 
 // RGB mode: the colour of an RGB value, and the RGB value of a colour.
 CANDELA_HD constexpr Color from_rgb(const Rgb& v) { return Color(v.r, v.g, v.b); }
-CANDELA_HD constexpr Rgb to_rgb(const Color& x) { return Rgb(x.c[0], x.c[1], x.c[2]); }
+CANDELA_HD inline Rgb to_rgb(const Color& x) { return Rgb(x.c[0], x.c[1], x.c[2]); }
 
 // Applies f to every channel.
 template <class F>
