@@ -46,8 +46,8 @@ Scene slab_scene(bool dispersive) {
     return s;
 }
 
-// z-tests of every block and the whole image: the dispersive slab's render, scaled by `scale`,
-// minus the plain slab's, variances added (other seeds: independent renders).
+// z-tests of every block and the whole image: the plain slab's render minus the dispersive
+// slab's scaled by `scale`, variances added (other seeds: independent renders).
 test::ZTestFamily compare_slabs(double scale) {
     const test::RenderMoments plain = test::render_moments(slab_scene(false));
     Scene dispersive_scene = slab_scene(true);
@@ -55,21 +55,7 @@ test::ZTestFamily compare_slabs(double scale) {
     const test::RenderMoments dispersive = test::render_moments(dispersive_scene);
     EXPECT_EQ(plain.dropped, 0u);
     EXPECT_EQ(dispersive.dropped, 0u);
-    const long blocks = long(kSize / kBlock) * long(kSize / kBlock);
-    test::ZTestFamily family(test::sidak_critical_z(test::kRenderTestAlpha, 3 * (blocks + 1)));
-    for (int c = 0; c < 3; ++c) {
-        for (int y = 0; y < kSize; y += kBlock) {
-            for (int x = 0; x < kSize; x += kBlock) {
-                const test::BlockEstimate a = test::block_estimate(dispersive, x, y, kBlock, c, scale);
-                const test::BlockEstimate b = test::block_estimate(plain, x, y, kBlock, c);
-                family.add(a.mean - b.mean, a.variance + b.variance, x, y, c);
-            }
-        }
-        const test::BlockEstimate a = test::block_estimate(dispersive, 0, 0, kSize, c, scale);
-        const test::BlockEstimate b = test::block_estimate(plain, 0, 0, kSize, c);
-        family.add(a.mean - b.mean, a.variance + b.variance, -1, -1, c);
-    }
-    return family;
+    return test::compare_blocks_and_whole(plain, dispersive, kBlock, scale);
 }
 
 TEST(Dispersion, ConstantDispersiveIndexRendersAsPlainIndex) {

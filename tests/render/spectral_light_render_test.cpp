@@ -53,21 +53,7 @@ test::ZTestFamily compare(Scene rgb, Scene spectral) {
     const test::RenderMoments b_moments = test::render_moments(rgb);
     EXPECT_EQ(a_moments.dropped, 0u);
     EXPECT_EQ(b_moments.dropped, 0u);
-    const long blocks = long(kSize / kBlock) * long(kSize / kBlock);
-    test::ZTestFamily family(test::sidak_critical_z(test::kRenderTestAlpha, 3 * (blocks + 1)));
-    for (int c = 0; c < 3; ++c) {
-        for (int y = 0; y < kSize; y += kBlock) {
-            for (int x = 0; x < kSize; x += kBlock) {
-                const test::BlockEstimate a = test::block_estimate(a_moments, x, y, kBlock, c);
-                const test::BlockEstimate b = test::block_estimate(b_moments, x, y, kBlock, c);
-                family.add(a.mean - b.mean, a.variance + b.variance, x, y, c);
-            }
-        }
-        const test::BlockEstimate a = test::block_estimate(a_moments, 0, 0, kSize, c);
-        const test::BlockEstimate b = test::block_estimate(b_moments, 0, 0, kSize, c);
-        family.add(a.mean - b.mean, a.variance + b.variance, -1, -1, c);
-    }
-    return family;
+    return test::compare_blocks_and_whole(a_moments, b_moments, kBlock);
 }
 
 // Illuminant A, a 2856 K blackbody: a warm light whose colour is inside the sRGB gamut.

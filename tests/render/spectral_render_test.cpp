@@ -40,21 +40,7 @@ test::ZTestFamily compare_modes(Scene scene) {
     const test::RenderMoments spectral = test::render_moments(scene);
     EXPECT_EQ(rgb.dropped, 0u);
     EXPECT_EQ(spectral.dropped, 0u);
-    const long blocks = long(kSize / kBlock) * long(kSize / kBlock);
-    test::ZTestFamily family(test::sidak_critical_z(test::kRenderTestAlpha, 3 * (blocks + 1)));
-    for (int c = 0; c < 3; ++c) {
-        for (int y = 0; y < kSize; y += kBlock) {
-            for (int x = 0; x < kSize; x += kBlock) {
-                const test::BlockEstimate a = test::block_estimate(spectral, x, y, kBlock, c);
-                const test::BlockEstimate b = test::block_estimate(rgb, x, y, kBlock, c);
-                family.add(a.mean - b.mean, a.variance + b.variance, x, y, c);
-            }
-        }
-        const test::BlockEstimate a = test::block_estimate(spectral, 0, 0, kSize, c);
-        const test::BlockEstimate b = test::block_estimate(rgb, 0, 0, kSize, c);
-        family.add(a.mean - b.mean, a.variance + b.variance, -1, -1, c);
-    }
-    return family;
+    return test::compare_blocks_and_whole(spectral, rgb, kBlock);
 }
 
 TEST(SpectralMode, GreySceneRendersAsInRgbMode) {

@@ -253,6 +253,21 @@ inline void compare_renders(const RenderMoments& a, const RenderMoments& b, int 
     }
 }
 
+// compare_renders of every block and, per channel, of the whole (square) image, in one family
+// Sidak-corrected at kRenderTestAlpha for them all.
+inline ZTestFamily compare_blocks_and_whole(const RenderMoments& a, const RenderMoments& b, int block,
+                                            double scale_b = 1.0) {
+    const long blocks = long(a.width / block) * long(a.height / block);
+    ZTestFamily family(sidak_critical_z(kRenderTestAlpha, 3 * (blocks + 1)));
+    compare_renders(a, b, block, family, scale_b);
+    for (int c = 0; c < 3; ++c) {
+        const BlockEstimate ea = block_estimate(a, 0, 0, a.width, c);
+        const BlockEstimate eb = block_estimate(b, 0, 0, a.width, c, scale_b);
+        family.add(ea.mean - eb.mean, ea.variance + eb.variance, -1, -1, c);
+    }
+    return family;
+}
+
 // The number of block-channels of `m` with a nonzero mean (the ones a scaled copy changes).
 inline long lit_blocks(const RenderMoments& m, int block) {
     long lit = 0;
@@ -267,5 +282,6 @@ inline void write_diagnostic(const RenderMoments& m, const std::string& name) {
     std::filesystem::path file = std::filesystem::path(CANDELA_TEST_BINARY_DIR) / (name + ".pfm");
     write_image(file, m.image(), FilmSettings{});
 }
+
 
 }  // namespace candela::test
