@@ -41,10 +41,10 @@ struct AreaLight {
 CANDELA_HD inline Color area_light_radiance(const AreaLight& light, const Vec3f& n, const Vec3f& w) {
     return light.two_sided || dot(n, w) > 0.0f ? light.emission : Color();
 }
-// The same at the wavelengths `lambda` (spectral mode).
-CANDELA_HD inline Color area_light_radiance(const AreaLight& light, const Vec3f& n, const Vec3f& w,
-                                            const Color& lambda) {
-    return light.two_sided || dot(n, w) > 0.0f ? light.spectral_emission.eval(lambda) : Color();
+// Whether the light emits towards w from a point with front normal n: spectral mode's test, whose
+// value, spectral_emission at the path's wavelengths, LightSet evaluates once per path.
+CANDELA_HD inline bool area_light_faces(const AreaLight& light, const Vec3f& n, const Vec3f& w) {
+    return light.two_sided || dot(n, w) > 0.0f;
 }
 
 // Total emitted power as luminance: a Lambertian emitter sends pi L per unit area from each

@@ -90,7 +90,7 @@ float LightSet::environment_pdf(const Vec3f& w) const {
 
 template <bool kSpectral>
 CANDELA_HD std::optional<LightSample> LightSet::sample_in(const Vec3f& ref, float uc, const Vec2f& u,
-                                                          const Color* lambda) const {
+                                                          const Color* lambda, SpectralEmissionCache* cache) const {
     // The one object returned on every path, built in place where the caller receives it.
     std::optional<LightSample> result;
     if (selection_.empty()) return result;
@@ -98,7 +98,7 @@ CANDELA_HD std::optional<LightSample> LightSet::sample_in(const Vec3f& ref, floa
     const float probability = selection_probability_[chosen];
     if (chosen >= lights_.size()) {  // the environment or a delta light
         if (chosen >= delta_begin_) {
-            sample_delta_light_at<kSpectral>(ref, chosen - delta_begin_, probability, lambda, result);
+            sample_delta_light_at<kSpectral>(ref, chosen - delta_begin_, probability, lambda, cache, result);
             return result;
         }
         std::optional<EnvironmentSample> es = environment_->sample(u);
@@ -120,7 +120,7 @@ CANDELA_HD std::optional<LightSample> LightSet::sample_in(const Vec3f& ref, floa
     ls.wi = es->wi;
     ls.infinite = false;
     if constexpr (kSpectral)
-        ls.Le = area_light_radiance(light, es->n, -es->wi, *lambda);
+        ls.Le = area_light_faces(light, es->n, -es->wi) ? area_emission(chosen, *lambda, cache) : Color();
     else
         ls.Le = area_light_radiance(light, es->n, -es->wi);
     ls.pdf = pdf;
@@ -129,11 +129,15 @@ CANDELA_HD std::optional<LightSample> LightSet::sample_in(const Vec3f& ref, floa
 
 template <bool kSpectral>
 CANDELA_HD void LightSet::sample_delta_light_at(const Vec3f& ref, uint32_t index, float probability,
-                                                const Color* lambda, std::optional<LightSample>& result) const {
+                                                const Color* lambda, SpectralEmissionCache* cache,
+                                                std::optional<LightSample>& result) const {
     std::optional<DeltaLightSample> ds = sample_delta_light(delta_lights_[index], ref);
     if (!ds || ds->Li.is_black()) return;
     Color Li = ds->Li;
-    if constexpr (kSpectral) Li = delta_spectral_[index].eval(*lambda) * ds->factor;
+    if constexpr (kSpectral) {
+        const SpectralColor& e = delta_spectral_[index];
+        Li = (cache ? cache->get(delta_begin_ + index, e, *lambda) : e.eval(*lambda)) * ds->factor;
+    }
     // The sample is certain given the light: the only density is the selection's.
     result.emplace(LightSample{ds->p, -ds->wi, ds->wi, ds->infinite, true, Li, probability});
 }
@@ -147,11 +151,12 @@ CANDELA_HD float LightSet::pdf(const Vec3f& ref, uint32_t shape_id, const Vec3f&
 }
 
 template <bool kSpectral>
-CANDELA_HD Color LightSet::emitted_in(uint32_t shape_id, const Vec3f& n, const Vec3f& w, const Color* lambda) const {
+CANDELA_HD Color LightSet::emitted_in(uint32_t shape_id, const Vec3f& n, const Vec3f& w, const Color* lambda,
+                                     SpectralEmissionCache* cache) const {
     uint32_t li = light_index(shape_id);
     if (li == kNoLight) return Color();
     if constexpr (kSpectral)
-        return area_light_radiance(lights_[li], n, w, *lambda);
+        return area_light_faces(lights_[li], n, w) ? area_emission(li, *lambda, cache) : Color();
     else
         return area_light_radiance(lights_[li], n, w);
 }
@@ -163,9 +168,13 @@ CANDELA_HD float LightSet::selection_probability(uint32_t shape_id) const {
 
 template Color LightSet::environment_radiance_in<false>(const Vec3f&, const Color*) const;
 template Color LightSet::environment_radiance_in<true>(const Vec3f&, const Color*) const;
-template std::optional<LightSample> LightSet::sample_in<false>(const Vec3f&, float, const Vec2f&, const Color*) const;
-template std::optional<LightSample> LightSet::sample_in<true>(const Vec3f&, float, const Vec2f&, const Color*) const;
-template Color LightSet::emitted_in<false>(uint32_t, const Vec3f&, const Vec3f&, const Color*) const;
-template Color LightSet::emitted_in<true>(uint32_t, const Vec3f&, const Vec3f&, const Color*) const;
+template std::optional<LightSample> LightSet::sample_in<false>(const Vec3f&, float, const Vec2f&, const Color*,
+                                                               SpectralEmissionCache*) const;
+template std::optional<LightSample> LightSet::sample_in<true>(const Vec3f&, float, const Vec2f&, const Color*,
+                                                              SpectralEmissionCache*) const;
+template Color LightSet::emitted_in<false>(uint32_t, const Vec3f&, const Vec3f&, const Color*,
+                                           SpectralEmissionCache*) const;
+template Color LightSet::emitted_in<true>(uint32_t, const Vec3f&, const Vec3f&, const Color*,
+                                          SpectralEmissionCache*) const;
 
 }  // namespace candela

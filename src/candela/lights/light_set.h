@@ -29,6 +29,7 @@
 #include "candela/lights/environment_light.h"
 #include "candela/lights/light_sample.h"
 #include "candela/lights/light_selection.h"
+#include "candela/lights/spectral_emission_cache.h"
 #include "candela/sampling/distribution_1d.h"
 
 namespace candela {
@@ -66,7 +67,8 @@ class LightSet {
 
     // The functions below give RGB-mode colours, and with `lambda` the values at a path's
     // wavelengths (spectral mode): two instances of one template each, so that RGB mode's code
-    // is what it was before spectral mode existed.
+    // is what it was before spectral mode existed. A spectral `cache` (one per path, optional)
+    // holds the lights' emission at the path's wavelengths.
 
     // Radiance arriving from world direction w (unit) from the environment; black without one.
     Color environment_radiance(const Vec3f& w) const { return environment_radiance_in<false>(w, nullptr); }
@@ -82,10 +84,11 @@ class LightSet {
     // nothing to ref). A point on the back of a one-sided light comes back with black Le and its
     // true pdf (a sphere of reverse orientation seen from outside shows only its back).
     CANDELA_HD std::optional<LightSample> sample(const Vec3f& ref, float uc, const Vec2f& u) const {
-        return sample_in<false>(ref, uc, u, nullptr);
+        return sample_in<false>(ref, uc, u, nullptr, nullptr);
     }
-    CANDELA_HD std::optional<LightSample> sample(const Vec3f& ref, float uc, const Vec2f& u, const Color& lambda) const {
-        return sample_in<true>(ref, uc, u, &lambda);
+    CANDELA_HD std::optional<LightSample> sample(const Vec3f& ref, float uc, const Vec2f& u, const Color& lambda,
+                                                 SpectralEmissionCache* cache = nullptr) const {
+        return sample_in<true>(ref, uc, u, &lambda, cache);
     }
 
     // The pdf per solid angle (selection included) with which sample() from `ref` would have
@@ -96,10 +99,11 @@ class LightSet {
     // Radiance leaving a point of shape `shape_id` with front normal n in direction w (unit,
     // pointing away from the surface); black for non-emitters and from behind one-sided ones.
     CANDELA_HD Color emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w) const {
-        return emitted_in<false>(shape_id, n, w, nullptr);
+        return emitted_in<false>(shape_id, n, w, nullptr, nullptr);
     }
-    CANDELA_HD Color emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w, const Color& lambda) const {
-        return emitted_in<true>(shape_id, n, w, &lambda);
+    CANDELA_HD Color emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w, const Color& lambda,
+                             SpectralEmissionCache* cache = nullptr) const {
+        return emitted_in<true>(shape_id, n, w, &lambda, cache);
     }
 
     // The probability that sample() picks the light of shape `shape_id`; 0 if it is not a light.
@@ -108,21 +112,29 @@ class LightSet {
   private:
     static constexpr uint32_t kNoLight = 0xffffffffu;
 
-    // The mode's implementations (lambda null when !kSpectral); instantiated in light_set.cpp.
+    // The mode's implementations (lambda and cache null when !kSpectral; cache may be null when
+    // kSpectral); instantiated in light_set.cpp.
     template <bool kSpectral>
     Color environment_radiance_in(const Vec3f& w, const Color* lambda) const;
     template <bool kSpectral>
     CANDELA_HD std::optional<LightSample> sample_in(const Vec3f& ref, float uc, const Vec2f& u,
-                                                    const Color* lambda) const;
+                                                    const Color* lambda, SpectralEmissionCache* cache) const;
     template <bool kSpectral>
-    CANDELA_HD Color emitted_in(uint32_t shape_id, const Vec3f& n, const Vec3f& w, const Color* lambda) const;
+    CANDELA_HD Color emitted_in(uint32_t shape_id, const Vec3f& n, const Vec3f& w, const Color* lambda,
+                                SpectralEmissionCache* cache) const;
 
     // sample() for delta_lights_[index], chosen with `probability`: written into `result`, out
     // of line (the area lights' and the environment's paths stay as they were without delta
     // lights).
     template <bool kSpectral>
     CANDELA_HD void sample_delta_light_at(const Vec3f& ref, uint32_t index, float probability, const Color* lambda,
-                                          std::optional<LightSample>& result) const;
+                                          SpectralEmissionCache* cache, std::optional<LightSample>& result) const;
+
+    // Area light `li`'s spectral emission at `lambda`, through the path's cache when given.
+    CANDELA_HD Color area_emission(uint32_t li, const Color& lambda, SpectralEmissionCache* cache) const {
+        const SpectralColor& e = lights_[li].spectral_emission;
+        return cache ? cache->get(li, e, lambda) : e.eval(lambda);
+    }
 
     // The index in lights_ of shape `shape_id`, or kNoLight.
     CANDELA_HD uint32_t light_index(uint32_t shape_id) const {

@@ -10,6 +10,7 @@
 #include "candela/render/ray_counters.h"
 #include "candela/render/render_settings.h"
 #include "candela/render/shading_frame.h"
+#include "candela/render/spectral_bsdf_cache.h"
 #include "candela/sampling/sampler.h"
 #include "candela/scene/scene.h"
 #include "candela/spectrum/sampled_wavelengths.h"
@@ -30,10 +31,12 @@ struct PathVertex {
 
     PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray)
         : PathVertex(scene, accel, h, ray, scene.materials[scene.shapes[h.shape_id].material]) {}
-    // Spectral mode: the BSDF at the path's wavelengths, built at every hit; a dispersive
-    // material first keeps only the hero wavelength of `w`.
-    PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, SampledWavelengths& w)
-        : PathVertex(scene, accel, h, ray, scene.materials[scene.shapes[h.shape_id].material], w) {}
+    // Spectral mode: the BSDF at the path's wavelengths, built at every hit, or for an untextured
+    // material read from the path's `cache` when given (built there at its first hit); a
+    // dispersive material first keeps only the hero wavelength of `w`.
+    PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, SampledWavelengths& w,
+               SpectralBsdfCache* cache)
+        : PathVertex(scene, accel, h, ray, scene.shapes[h.shape_id].material, w, cache) {}
 
   private:
     // One flag per vertex for materials without textures, maps or anisotropy (the Cornell box's):
@@ -46,15 +49,25 @@ struct PathVertex {
           frame(m.per_hit ? per_hit_frame(scene, accel, m, h) : Frame::from_normal(h.ns)),
           wo(frame.to_local(-ray.d)) {}
 
+    PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, uint32_t mi,
+               SampledWavelengths& w, SpectralBsdfCache* cache)
+        : PathVertex(scene, accel, h, ray, scene.materials[mi], mi, w, cache) {}
     PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, const Material& m,
-               SampledWavelengths& w)
+               uint32_t mi, SampledWavelengths& w, SpectralBsdfCache* cache)
         : hit(h),
-          bsdf(spectral_bsdf(scene, accel, m, w)),
+          bsdf(spectral_bsdf(scene, accel, m, mi, w, cache)),
           frame(m.per_hit ? per_hit_frame(scene, accel, m, h) : Frame::from_normal(h.ns)),
           wo(frame.to_local(-ray.d)) {}
 
-    const Bsdf& spectral_bsdf(const Scene& scene, const Accelerator& accel, const Material& m, SampledWavelengths& w) {
+    const Bsdf& spectral_bsdf(const Scene& scene, const Accelerator& accel, const Material& m, uint32_t mi,
+                              SampledWavelengths& w, SpectralBsdfCache* cache) {
         if (m.dispersive) w.terminate_secondary();
+        if (cache && !m.textured) {
+            bool cached = false;
+            Bsdf& b = cache->slot(mi, cached);
+            if (!cached) build_bsdf_into(b, m, scene.textures, TextureContext{Vec2f(), hit.p, &w.lambda});
+            return b;
+        }
         const Vec2f uv = m.textured ? accel.uv(hit) : Vec2f();
         Bsdf& b = textured_bsdf.emplace();
         build_bsdf_into(b, m, scene.textures, TextureContext{uv, hit.p, &w.lambda});
@@ -147,14 +160,16 @@ inline bool survive_russian_roulette(Color& beta, float eta_scale, int bounces, 
 // against BSDF sampling when `mis`, except for a delta light (point, spot, directional), which BSDF
 // sampling cannot find: its weight is 1 (pbrt-v4's PathIntegrator::SampleLd). Counts its shadow
 // ray. Black for delta-only BSDFs.
-// `lambda`: the path's wavelengths in spectral mode (kSpectral), else unused.
+// `lambda`: the path's wavelengths in spectral mode (kSpectral), else unused; `cache`: the path's
+// emission cache in spectral mode, when the integrator keeps one.
 template <bool kSpectral = false>
 inline Color sample_direct_light(const PathVertex& v, const LightSet& lights, const Accelerator& accel, bool mis,
-                                 const LightNumbers& n, RayCounters& counters, const Color* lambda = nullptr) {
+                                 const LightNumbers& n, RayCounters& counters, const Color* lambda = nullptr,
+                                 SpectralEmissionCache* cache = nullptr) {
     if (v.bsdf.is_delta_only() || lights.empty()) return Color(0.0f);
     std::optional<LightSample> ls;
     if constexpr (kSpectral)
-        ls = lights.sample(v.hit.p, n.uc, n.u, *lambda);
+        ls = lights.sample(v.hit.p, n.uc, n.u, *lambda, cache);
     else
         ls = lights.sample(v.hit.p, n.uc, n.u);
     if (!ls || ls->pdf <= 0.0f || ls->Le.is_black()) return Color(0.0f);
@@ -181,12 +196,13 @@ inline std::optional<BsdfSample> continue_path(const PathVertex& v, const BsdfNu
     return bs;
 }
 
-// The vertex at `hit` in the integrator's mode: RGB (w unused) or spectral at the wavelengths w.
+// The vertex at `hit` in the integrator's mode: RGB (w and cache unused) or spectral at the
+// wavelengths w, with the path's BSDF cache when the integrator keeps one.
 template <bool kSpectral>
 PathVertex make_vertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& hit, const Ray& ray,
-                       SampledWavelengths* w) {
+                       SampledWavelengths* w, SpectralBsdfCache* cache = nullptr) {
     if constexpr (kSpectral)
-        return PathVertex(scene, accel, hit, ray, *w);
+        return PathVertex(scene, accel, hit, ray, *w, cache);
     else
         return PathVertex(scene, accel, hit, ray);
 }

@@ -20,6 +20,14 @@ Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters
     bool after_delta = false;  // the last bounce was a delta lobe: NEE could not have found the light
     float prev_bsdf_pdf = 0.0f;
     Vec3f prev_p;
+    // Spectral mode: the untextured materials' BSDFs and the lights' emission at this path's
+    // wavelengths, which do not change along it (spectral_bsdf_cache.h, spectral_emission_cache.h).
+    // Plain locals (RGB mode never reads them, and the compiler drops them there), not
+    // std::optional, whose default constructor zeroes its whole storage: 1.7 kB per path.
+    SpectralBsdfCache bsdf_cache_storage;
+    SpectralEmissionCache emission_cache_storage;
+    SpectralBsdfCache* bsdf_cache = kSpectral ? &bsdf_cache_storage : nullptr;
+    SpectralEmissionCache* emission_cache = kSpectral ? &emission_cache_storage : nullptr;
     for (int bounces = 0;; ++bounces) {
         ++(bounces == 0 ? counters.camera : counters.bounce);
         // This vertex's random numbers, drawn while the ray is traced (path_common.h).
@@ -37,7 +45,7 @@ Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters
             break;
         }
 
-        Color Le = emitted<kSpectral>(hit->shape_id, hit->ng, -ray.d, lambda);
+        Color Le = emitted<kSpectral>(hit->shape_id, hit->ng, -ray.d, lambda, emission_cache);
         if (!Le.is_black()) {
             if (bounces == 0 || after_delta) {
                 L += beta * Le;
@@ -49,8 +57,9 @@ Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters
         }
         if (bounces == scene_.integrator.max_depth) break;
 
-        PathVertex v = make_vertex<kSpectral>(scene_, accel_, *hit, ray, w);
-        L += beta * sample_direct_light<kSpectral>(v, lights_, accel_, scene_.integrator.mis, light_numbers, counters, lambda);
+        PathVertex v = make_vertex<kSpectral>(scene_, accel_, *hit, ray, w, bsdf_cache);
+        L += beta * sample_direct_light<kSpectral>(v, lights_, accel_, scene_.integrator.mis, light_numbers, counters, lambda,
+                                                   emission_cache);
 
         std::optional<BsdfSample> bs = continue_path(v, bsdf_numbers, beta, ray);
         if (!bs) break;

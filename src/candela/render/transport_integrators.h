@@ -36,10 +36,12 @@ class TransportIntegrator : public Integrator {
         else
             return lights_.environment_radiance(w);
     }
+    // `cache`: the path's emission cache in spectral mode, when the integrator keeps one.
     template <bool kSpectral>
-    Color emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w, const Color* lambda) const {
+    Color emitted(uint32_t shape_id, const Vec3f& n, const Vec3f& w, const Color* lambda,
+                  SpectralEmissionCache* cache = nullptr) const {
         if constexpr (kSpectral)
-            return lights_.emitted(shape_id, n, w, *lambda);
+            return lights_.emitted(shape_id, n, w, *lambda, cache);
         else
             return lights_.emitted(shape_id, n, w);
     }
