@@ -35,7 +35,7 @@ struct PathVertex {
     // material read from the path's `cache` when given (built there at its first hit); a
     // dispersive material first keeps only the hero wavelength of `w`.
     PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, SampledWavelengths& w,
-               SpectralBsdfCache* cache)
+               SpectralBsdfCache* cache = nullptr)
         : PathVertex(scene, accel, h, ray, scene.shapes[h.shape_id].material, w, cache) {}
 
   private:
