@@ -19,9 +19,10 @@ namespace candela {
 struct Bsdf {
     static constexpr uint32_t kMaxLobes = 4;
     // Each variant holds a default LambertianLobe (a variant always value-initializes its first
-    // alternative). The constructor is user-provided so that value-initialization
-    // (optional::emplace()) does not first zero all 416 bytes, which the per-hit BSDF of
-    // spectral mode would pay at every vertex (4% of a spectral Cornell box).
+    // alternative). The constructor is user-provided so that value-initialization does not add
+    // a zeroing of the whole object; GCC 12's std::variant still zero-fills each alternative's
+    // storage (416 bytes in all), which is why spectral mode keeps the BSDFs of untextured
+    // materials for the whole path (render/spectral_bsdf_cache.h) instead of building one per hit.
     std::array<BsdfLobe, kMaxLobes> lobes;
     uint32_t lobe_count = 0;
 
