@@ -26,6 +26,7 @@
 #include "candela/math/vec.h"
 #include "candela/spectrum/cie_tables.h"
 #include "candela/spectrum/color_space.h"
+#include "candela/spectrum/dense_spectrum.h"
 #include "candela/spectrum/sampled_wavelengths.h"
 
 namespace candela {
@@ -53,10 +54,10 @@ class Sensor {
         Vec3f xyz;
         for (int i = 0; i < kColorChannels; ++i) {
             if (w.pdf[i] == 0.0f) continue;  // a terminated secondary wavelength
-            // The nearest tabulated nm, as DenseSpectrum's lookup: lambda + 0.5 truncated is
-            // lround for the positive wavelengths the sampler makes.
-            const int n = int(w.lambda[i] + 0.5f) - int(kCieLambdaMin);
-            if (n < 0 || n >= kCieSamples) continue;
+            // The nearest tabulated nm, as DenseSpectrum's lookup (the CIE tables share its
+            // layout: dense_spectrum.cpp checks).
+            const int n = dense_index(w.lambda[i]);
+            if (n < 0) continue;
             const float weight = L[i] / w.pdf[i];
             xyz += Vec3f(kCieX[n], kCieY[n], kCieZ[n]) * weight;
         }

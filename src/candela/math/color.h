@@ -121,8 +121,11 @@ CANDELA_HD inline Color sqrt_nonnegative_channels(const Color& x) {
     return map_channels(x, [](float v) { return std::sqrt(v); });
 #endif
 }
+// The square root of every channel, negative channels taken as 0.
 CANDELA_HD inline Color sqrt_channels(const Color& x) {
-    return map_channels(x, [](float v) { return std::sqrt(v > 0.0f ? v : 0.0f); });
+    Color clamped;
+    clamped.c = x.c > 0.0f ? x.c : ColorLanes{0.0f, 0.0f, 0.0f, 0.0f};
+    return sqrt_nonnegative_channels(clamped);
 }
 CANDELA_HD inline Color exp_channels(const Color& x) {
     return map_channels(x, [](float v) { return std::exp(v); });

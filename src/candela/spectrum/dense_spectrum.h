@@ -17,14 +17,21 @@ inline constexpr int kDenseLambdaMin = 360;
 inline constexpr int kDenseLambdaMax = 830;
 inline constexpr int kDenseSamples = kDenseLambdaMax - kDenseLambdaMin + 1;
 
+// The index of the nearest tabulated nm in a 360-830 nm table (this one's, and the CIE
+// tables', which share its layout), or -1 outside it. int(lambda + 0.5) is lround for the
+// wavelengths that can be inside, and compiles inline; lroundf is a call.
+CANDELA_HD inline int dense_index(float lambda) {
+    const int i = int(lambda + 0.5f) - kDenseLambdaMin;
+    return i < 0 || i >= kDenseSamples ? -1 : i;
+}
+
 struct DenseSpectrum {
     std::array<float, kDenseSamples> v{};
 
-    // The value at the nearest tabulated nm; 0 outside [360, 830]. (int(lambda + 0.5) is
-    // lround for the wavelengths that can be inside, and compiles inline; lroundf is a call.)
+    // The value at the nearest tabulated nm; 0 outside [360, 830].
     CANDELA_HD float operator()(float lambda) const {
-        const int i = int(lambda + 0.5f) - kDenseLambdaMin;
-        return i < 0 || i >= kDenseSamples ? 0.0f : v[size_t(i)];
+        const int i = dense_index(lambda);
+        return i < 0 ? 0.0f : v[size_t(i)];
     }
     // The values at a path's four wavelengths.
     CANDELA_HD Color eval(const Color& lambda) const {
