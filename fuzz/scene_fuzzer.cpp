@@ -20,7 +20,9 @@ void require_valid_scene(const Scene& scene) {
     require(scene.material_names.size() == scene.materials.size(), "one name per material");
     for (const Shape& shape : scene.shapes) {
         require(shape.material < scene.materials.size(), "shape materials defined");
-        const size_t count = shape.kind == ShapeKind::kMesh ? scene.meshes.size() : scene.spheres.size();
+        const size_t count = shape.kind == ShapeKind::kMesh     ? scene.meshes.size()
+                             : shape.kind == ShapeKind::kSphere ? scene.spheres.size()
+                                                                : scene.disks.size();
         require(shape.index < count, "shape geometry defined");
         require(shape.emission.is_finite(), "finite emission");
     }
@@ -30,6 +32,10 @@ void require_valid_scene(const Scene& scene) {
     }
     for (const Sphere& sphere : scene.spheres)
         require(is_finite(sphere.center) && std::isfinite(sphere.radius) && sphere.radius > 0, "valid spheres");
+    for (const Disk& disk : scene.disks)
+        require(is_finite(disk.center) && is_finite(disk.axis_u) && is_finite(disk.axis_v) && is_finite(disk.normal) &&
+                    disk.area() > 0 && std::isfinite(disk.area()),
+                "valid disks");
     require(scene.camera.width >= 1 && scene.camera.height >= 1, "a camera with pixels");
     require(scene.sampler.spp >= 1, "at least one sample per pixel");
     require(scene.integrator.max_depth >= 1, "a positive max_depth");
