@@ -21,7 +21,7 @@
 #include "bench/ray_file.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/render/renderer.h"
-#include "candela/scene/scene_loader.h"
+#include "candela/formats/json/scene_loader.h"
 
 using namespace candela;
 using bench::RayKind;

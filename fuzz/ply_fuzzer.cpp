@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "candela/core/error.h"
-#include "candela/scene/ply_loader.h"
+#include "candela/formats/mesh/ply_loader.h"
 #include "mesh_invariants.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

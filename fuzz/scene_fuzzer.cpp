@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "candela/core/error.h"
-#include "candela/scene/scene_loader.h"
+#include "candela/formats/json/scene_loader.h"
 #include "mesh_invariants.h"
 
 namespace candela::fuzz {

@@ -1,332 +1,25 @@
-// candela: the command-line program. Thin by design: parse flags, load, render, write; the
-// library does the work. Exit codes: 0 ok (also when stopped by --time-limit), 2 bad input (scene,
-// files, flags, checkpoints), 1 internal error, 130 / 143 stopped by SIGINT / SIGTERM.
+// candela: the command-line program. Thin by design: one file per subcommand parses its flags
+// and calls the library. Exit codes: 0 ok (also when stopped by --time-limit), 2 bad input
+// (scene, files, flags, checkpoints), 1 internal error, 130 / 143 stopped by SIGINT / SIGTERM.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <sys/resource.h>
-#include <unistd.h>
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <csignal>
 #include <cstdio>
-#include <filesystem>
-#include <limits>
-#include <optional>
-#include <regex>
 #include <string>
-#include <vector>
 
-#include "candela/core/atomic_file.h"
 #include "candela/core/error.h"
-#include "candela/image/image_io.h"
-#include "candela/render/checkpoint.h"
-#include "candela/render/progress.h"
-#include "candela/render/renderer.h"
-#include "candela/scene/content_hash.h"
-#include "candela/scene/enum_names.h"
-#include "candela/scene/scene_loader.h"
-#include "stop_signals.h"
+#include "cli_exit_codes.h"
+#include "render_command.h"
 
-namespace fs = std::filesystem;
 using namespace candela;
-
-namespace {
-
-constexpr int kExitBadInput = 2;
-constexpr int kExitInternal = 1;
-
-// The command's start, as near as static initialisation gets: startup times count from here.
-const auto kProgramStart = std::chrono::steady_clock::now();
-
-double seconds_since_start() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - kProgramStart).count();
-}
-
-// For --stats: scene loading, and the whole time from the command's start to the first sample.
-struct StartupTimes {
-    double load_seconds = 0;
-    double startup_seconds = 0;
-};
-
-// The process's peak resident memory so far (Linux reports ru_maxrss in KiB).
-uint64_t peak_rss_bytes() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return uint64_t(usage.ru_maxrss) * 1024;
-}
-
-struct RenderArgs {
-    std::string scene;
-    std::vector<std::string> outputs;
-    std::optional<int> spp;
-    std::optional<uint64_t> seed;
-    std::optional<int> threads;
-    std::optional<std::string> resolution;
-    std::optional<std::string> integrator;
-    std::optional<std::string> sampler;
-    bool spectral = false;  // --spectral
-    bool rgb = false;       // --rgb
-    std::optional<std::string> stats;
-    std::optional<std::string> memory_limit;  // e.g. "8G"; default: what the process can have
-    std::optional<double> time_limit;        // seconds
-    std::optional<std::string> resume;       // a checkpoint to continue
-    std::optional<std::string> checkpoint;   // where checkpoints go
-    std::optional<double> checkpoint_every;  // seconds
-    std::optional<double> iso;               // the film's sensor (film/sensor.h)
-    std::optional<double> exposure_time;     // seconds
-    std::optional<double> white_balance;     // kelvin; 0 = none
-};
-
-// A flag value the user got wrong: reported like a scene error, without a file.
-[[noreturn]] void bad_flag(const std::string& message) { throw SceneError({}, message); }
-
-// The default output: <scene name>.png in the current folder, where the scene name is the file's
-// stem, or its folder's name for the conventional scenes/<name>/scene.json.
-fs::path default_output(const fs::path& scene) {
-    std::string stem = scene.stem().string();
-    if (stem == "scene" && scene.has_parent_path()) stem = fs::absolute(scene).parent_path().filename().string();
-    return stem + ".png";
-}
-
-// The film's sensor flags, checked as the scene file's film keys are (scene_loader.cpp).
-void apply_sensor_overrides(const RenderArgs& a, FilmSettings& film) {
-    auto positive_float = [](const char* flag, double v) {
-        if (!(v > 0) || !(v <= double(std::numeric_limits<float>::max())))
-            bad_flag(fmt::format("{}: expected a number > 0 within float range, got {}", flag, v));
-        return float(v);
-    };
-    if (a.iso) film.iso = positive_float("--iso", *a.iso);
-    if (a.exposure_time) film.exposure_time = positive_float("--exposure-time", *a.exposure_time);
-    const float ratio = imaging_ratio(film);
-    if (!(ratio > 0.0f && std::isfinite(ratio)))
-        bad_flag(fmt::format("--iso, --exposure-time: the imaging ratio exposure_time * iso / 100 = {:g} * {:g} / 100 is {}",
-                             film.exposure_time, film.iso, ratio > 0.0f ? "beyond float range" : "below float range (0)"));
-    if (a.white_balance) {
-        const double t = *a.white_balance;
-        if (!(t == 0 || (t >= double(kMinWhiteBalanceKelvin) && t <= double(std::numeric_limits<float>::max()))))
-            bad_flag(fmt::format("--white-balance: expected 0 (no white balance) or a temperature >= {} (kelvin), got {}",
-                                 kMinWhiteBalanceKelvin, t));
-        film.white_balance = float(t);
-    }
-}
-
-// An override that changes the image must also go into scene_content_hash (checkpoints).
-void apply_overrides(const RenderArgs& a, Scene& scene) {
-    if (a.spp) {
-        if (*a.spp < 1) bad_flag(fmt::format("--spp: expected an integer >= 1, got {}", *a.spp));
-        scene.sampler.spp = *a.spp;
-    }
-    if (a.seed) scene.sampler.seed = *a.seed;
-    if (a.resolution) {
-        std::smatch m;
-        static const std::regex kWxH(R"((\d{1,6})x(\d{1,6}))");
-        if (!std::regex_match(*a.resolution, m, kWxH))
-            bad_flag(fmt::format("--resolution: expected WIDTHxHEIGHT (e.g. 640x480), got \"{}\"", *a.resolution));
-        int w = std::stoi(m[1]), h = std::stoi(m[2]);
-        if (w < 1 || h < 1 || w > 32768 || h > 32768)
-            bad_flag(fmt::format("--resolution: each side must be in 1..32768, got {}x{}", w, h));
-        scene.camera.width = w;
-        scene.camera.height = h;
-    }
-    if (a.integrator) {
-        std::optional<IntegratorType> t = parse_integrator_type(*a.integrator);
-        if (!t)
-            bad_flag(fmt::format("--integrator: unknown integrator \"{}\"; expected one of: {}", *a.integrator,
-                                 names_list(integrator_type_names())));
-        scene.integrator.type = *t;
-        // The scene loader refuses the same in a scene file (scene_lights.cpp).
-        if (*t == IntegratorType::kBsdf && !scene.delta_lights.empty())
-            bad_flag("--integrator bsdf: the bsdf integrator finds light only by hitting it, so it cannot see the "
-                     "scene's point, spot or directional lights (they have no area); use path or whitted");
-    }
-    if (a.spectral && a.rgb) bad_flag("--spectral and --rgb: choose one transport mode");
-    if (a.spectral) scene.integrator.spectral = true;
-    if (a.rgb) scene.integrator.spectral = false;
-    if (a.sampler) {
-        std::optional<SamplerType> t = parse_sampler_type(*a.sampler);
-        if (!t)
-            bad_flag(fmt::format("--sampler: unknown sampler \"{}\"; expected one of: {}", *a.sampler,
-                                 names_list(sampler_type_names())));
-        scene.sampler.type = *t;
-    }
-    apply_sensor_overrides(a, scene.film);
-}
-
-// Render statistics as JSON, for scripts (bench/run.sh) that should not parse the summary line.
-void write_stats(const fs::path& file, const Scene& scene, const RenderStats& s, const StartupTimes& t) {
-    std::string json = fmt::format(
-        "{{\"integrator\": \"{}\", \"width\": {}, \"height\": {}, \"spp\": {}, \"threads\": {},\n"
-        " \"render_seconds\": {:.6f}, \"build_seconds\": {:.6f}, \"samples\": {}, \"dropped_samples\": {},\n"
-        " \"load_seconds\": {:.6f}, \"startup_seconds\": {:.6f}, \"peak_rss_bytes\": {},\n"
-        " \"rays\": {{\"camera\": {}, \"bounce\": {}, \"shadow\": {}, \"total\": {}}}}}\n",
-        integrator_type_name(scene.integrator.type), scene.camera.width, scene.camera.height, scene.sampler.spp,
-        s.threads, s.render_seconds, s.build_seconds, s.samples, s.dropped_samples, t.load_seconds,
-        t.startup_seconds, peak_rss_bytes(), s.rays.camera, s.rays.bounce, s.rays.shadow, s.rays.total());
-    write_contents_atomically(file, json);
-}
-
-MemoryLimit memory_limit(const RenderArgs& a) {
-    if (!a.memory_limit) return MemoryLimit::of_this_process();
-    std::optional<uint64_t> bytes = parse_byte_count(*a.memory_limit);
-    if (!bytes) bad_flag(fmt::format("--memory-limit: expected a size such as 512M or 8G, got \"{}\"", *a.memory_limit));
-    return MemoryLimit{*bytes, "--memory-limit is"};
-}
-
-// The loader checked the scene's memory at its own resolution; --resolution may ask for more.
-void check_memory(const RenderArgs& a, const Scene& scene, const MemoryLimit& limit) {
-    if (std::optional<std::string> refused = memory_refusal(scene, limit))
-        bad_flag(a.resolution ? fmt::format("--resolution {}: {}", *a.resolution, *refused) : *refused);
-}
-
-// A positive, finite number of seconds from a flag.
-double seconds_flag(const char* flag, double value) {
-    if (!(value > 0) || !std::isfinite(value)) bad_flag(fmt::format("{}: expected seconds > 0, got {}", flag, value));
-    return value;
-}
-
-// What a stopped render says about why; empty when it is complete.
-std::string stop_reason(RenderEnd end, int signal, const RenderArgs& a) {
-    if (end == RenderEnd::kStopped) return fmt::format("stopped by {}", signal == SIGTERM ? "SIGTERM" : "SIGINT");
-    if (end == RenderEnd::kDeadline)
-        return fmt::format("stopped at the time limit ({})", format_duration(*a.time_limit));
-    return "";
-}
-
-int run_render(const RenderArgs& a) {
-    using Clock = std::chrono::steady_clock;
-    const Clock::time_point started = Clock::now();
-    std::vector<fs::path> outputs(a.outputs.begin(), a.outputs.end());
-    if (outputs.empty()) outputs.push_back(default_output(a.scene));
-    for (const fs::path& out : outputs)
-        if (!is_writable_image_extension(out))
-            bad_flag(fmt::format("-o {}: unknown image format \"{}\"; expected one of: .exr, .pfm, .hdr, .png, .ppm",
-                                 out.string(), out.extension().string()));
-    if (a.threads && *a.threads < 0) bad_flag(fmt::format("--threads: expected an integer >= 0, got {}", *a.threads));
-    if (a.time_limit) seconds_flag("--time-limit", *a.time_limit);
-    if (a.checkpoint_every) seconds_flag("--checkpoint-every", *a.checkpoint_every);
-    const fs::path checkpoint = a.checkpoint ? fs::path(*a.checkpoint) : fs::path(outputs.front().string() + ".ckpt");
-
-    StartupTimes startup;
-    const double load_start = seconds_since_start();
-    const MemoryLimit limit = memory_limit(a);
-    Scene scene = load_scene(a.scene, LoadOptions{limit});
-    startup.load_seconds = seconds_since_start() - load_start;
-    for (const std::string& w : scene.warnings) fmt::print(stderr, "candela: warning: {}\n", w);
-    apply_overrides(a, scene);
-    check_memory(a, scene, limit);
-
-    // Everything that must match for a checkpoint to continue this render (after the overrides).
-    const RenderIdentity identity = render_identity(scene, scene_content_hash(scene));
-    RenderState start{Film(scene.camera.width, scene.camera.height)};
-    if (a.resume) {
-        Checkpoint resumed = read_checkpoint(*a.resume);
-        check_checkpoint_matches(*a.resume, resumed.identity, identity);
-        start = std::move(resumed.state);
-        const bool nothing_left = start.samples_done >= uint32_t(scene.sampler.spp);
-        fmt::print(stderr, "candela: resuming from {}: {} of {} spp done{}\n", *a.resume, start.samples_done,
-                   scene.sampler.spp, nothing_left ? ", nothing left to render" : "");
-    }
-
-    RenderOptions options;
-    options.threads = a.threads.value_or(0);
-    options.progress = isatty(fileno(stderr)) != 0;
-    options.stop = [] { return cli::stop_signal() != 0; };
-    if (a.time_limit)
-        options.deadline = started + std::chrono::duration_cast<Clock::duration>(
-                                         std::chrono::duration<double>(*a.time_limit));
-    // Checkpoints between passes, every --checkpoint-every seconds; passes short enough for it.
-    Clock::time_point last_checkpoint = Clock::now();
-    if (a.checkpoint_every) {
-        options.pass_seconds = std::min(options.pass_seconds, *a.checkpoint_every);
-        options.on_pass = [&](const RenderState& state) {
-            if (std::chrono::duration<double>(Clock::now() - last_checkpoint).count() < *a.checkpoint_every) return;
-            try {
-                write_checkpoint(checkpoint, identity, state);
-            } catch (const SceneError& e) {  // the render goes on; the final write reports for good
-                fmt::print(stderr, "candela: warning: periodic checkpoint not written: {}\n", e.what());
-            }
-            last_checkpoint = Clock::now();
-        };
-    }
-
-    cli::install_stop_handlers();
-    startup.startup_seconds = seconds_since_start();
-    RenderResult result = render(scene, options, std::move(start));
-    startup.startup_seconds += result.stats.build_seconds;  // render() builds, then samples
-    const std::string stopped = stop_reason(result.end, cli::stop_signal(), a);
-    const int exit_code = result.end == RenderEnd::kStopped ? 128 + cli::stop_signal() : 0;
-    if (result.state.samples_done == 0) {
-        // An all-black image would replace a good one of an earlier run: write nothing.
-        fmt::print(stderr, "candela: {} before the first pass was complete; nothing written\n", stopped);
-        return exit_code;
-    }
-    // The checkpoint first: it is what a later run needs. Written whenever the render stopped
-    // early, and at the end of a render asked for checkpoints (so that it can be taken further).
-    const bool write_ckpt = !stopped.empty() || a.checkpoint || a.checkpoint_every || a.resume;
-    if (write_ckpt) write_checkpoint(checkpoint, identity, result.state);
-    for (const fs::path& out : outputs) write_image(out, result.image, scene.film);
-    if (a.stats) write_stats(*a.stats, scene, result.stats, startup);
-
-    const RenderStats& s = result.stats;
-    const uint32_t done = result.state.samples_done;
-    const std::string spp = done < uint32_t(scene.sampler.spp) ? fmt::format("{} of {}", done, scene.sampler.spp)
-                                                                : std::to_string(done);
-    std::string outs;
-    for (const fs::path& out : outputs) outs += (outs.empty() ? "" : ", ") + out.string();
-    if (write_ckpt) outs += ", checkpoint " + checkpoint.string();
-    if (!stopped.empty()) outs += fmt::format(" (continue with --resume {})", checkpoint.string());
-    const uint64_t dropped = result.state.dropped_samples;
-    fmt::print(stderr, "candela: {}x{}, {} spp, {} in {} ({} build), {}rays ({}rays/s), {} threads{}; {}wrote {}\n",
-               result.image.width, result.image.height, spp, integrator_type_name(scene.integrator.type), format_duration(s.render_seconds),
-               format_duration(s.build_seconds), format_count(double(s.rays.total())),
-               format_count(s.render_seconds > 0 ? double(s.rays.total()) / s.render_seconds : 0.0), s.threads,
-               dropped ? fmt::format(", {} NaN/Inf samples dropped", dropped) : "",
-               stopped.empty() ? "" : stopped + "; ", outs);
-    return exit_code;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"candela: a physically based Monte Carlo path tracer", "candela"};
     app.set_version_flag("--version", std::string("candela ") + CANDELA_VERSION);
     app.require_subcommand(1);
 
-    RenderArgs args;
-    CLI::App* render_cmd = app.add_subcommand("render", "Render a scene file to one or more images");
-    render_cmd->add_option("scene", args.scene, "Scene file (JSON, see docs/SCENE_FORMAT.md)")->required();
-    render_cmd->add_option("-o,--output", args.outputs,
-                           "Output image, format by extension: .exr .pfm .hdr (linear), .png .ppm (tone mapped); "
-                           "repeatable. Default: <scene name>.png");
-    render_cmd->add_option("--spp", args.spp, "Samples per pixel (overrides sampler.spp)");
-    render_cmd->add_option("--seed", args.seed, "Random seed (overrides sampler.seed)");
-    render_cmd->add_option("--threads", args.threads, "Render threads; 0 = all cores (default)");
-    render_cmd->add_option("--resolution", args.resolution, "Image size WIDTHxHEIGHT (overrides camera.resolution)");
-    render_cmd->add_option("--stats", args.stats, "Also write render statistics (times, samples, rays by kind) as JSON");
-    render_cmd->add_option("--memory-limit", args.memory_limit,
-                           "Refuse scenes estimated to need more memory than SIZE (e.g. 8G); default: the "
-                           "machine's memory, or less under a container or ulimit limit");
-    render_cmd->add_option("--sampler", args.sampler,
-                           std::string("Sampler (overrides sampler.type): ") + names_list(sampler_type_names()));
-    render_cmd->add_option("--integrator", args.integrator,
-                           std::string("Integrator (overrides integrator.type): ") + names_list(integrator_type_names()));
-    render_cmd->add_flag("--spectral", args.spectral,
-                         "Transport four wavelengths per path, as pbrt-v4 (overrides integrator.spectral)");
-    render_cmd->add_flag("--rgb", args.rgb, "Transport RGB (overrides integrator.spectral; the default for JSON scenes)");
-    render_cmd->add_option("--time-limit", args.time_limit,
-                           "Stop rendering after SECONDS (at a pass boundary); write the image and a checkpoint");
-    render_cmd->add_option("--resume", args.resume,
-                           "Continue the render saved in this checkpoint up to the scene's (or --spp's) samples");
-    render_cmd->add_option("--checkpoint", args.checkpoint, "Checkpoint file. Default: the first output + .ckpt");
-    render_cmd->add_option("--checkpoint-every", args.checkpoint_every, "Also write the checkpoint every SECONDS");
-    render_cmd->add_option("--iso", args.iso, "Sensor sensitivity (overrides film.iso; default 100)");
-    render_cmd->add_option("--exposure-time", args.exposure_time,
-                           "Sensor exposure time in seconds (overrides film.exposure_time; default 1)");
-    render_cmd->add_option("--white-balance", args.white_balance,
-                           "Make daylight of this temperature (kelvin) white; 0 = none (overrides film.white_balance)");
-
+    cli::RenderArgs render_args;
+    CLI::App* render_cmd = cli::add_render_command(app, render_args);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -337,16 +30,17 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         fmt::print(stderr, "candela: error: {}\n", e.what());
-        return kExitBadInput;
+        return cli::kExitBadInput;
     }
 
     try {
-        return run_render(args);
+        if (render_cmd->parsed()) return cli::run_render(render_args);
+        return cli::kExitInternal;
     } catch (const SceneError& e) {
         fmt::print(stderr, "candela: error: {}\n", e.what());
-        return kExitBadInput;
+        return cli::kExitBadInput;
     } catch (const std::exception& e) {
         fmt::print(stderr, "candela: internal error: {}\n", e.what());
-        return kExitInternal;
+        return cli::kExitInternal;
     }
 }

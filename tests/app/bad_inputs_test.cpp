@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "candela/core/error.h"
-#include "candela/scene/scene_loader.h"
+#include "candela/formats/json/scene_loader.h"
 
 namespace candela {
 namespace {

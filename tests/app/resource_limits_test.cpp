@@ -15,7 +15,7 @@
 #include <string>
 
 #include "candela/core/error.h"
-#include "candela/scene/scene_loader.h"
+#include "candela/formats/json/scene_loader.h"
 
 namespace candela {
 namespace {

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "candela/render/renderer.h"
-#include "candela/scene/scene_loader.h"
+#include "candela/formats/json/scene_loader.h"
 #include "support/render_moments.h"
 #include "support/test_scenes.h"
 

@@ -13,7 +13,7 @@
 #include "bench/block_compare.h"
 #include "candela/image/image_io.h"
 #include "candela/render/renderer.h"
-#include "candela/scene/scene_loader.h"
+#include "candela/formats/json/scene_loader.h"
 
 namespace candela {
 namespace {

@@ -10,7 +10,7 @@
 
 #include <string>
 
-#include "candela/scene/scene_loader.h"
+#include "candela/formats/json/scene_loader.h"
 #include "support/render_moments.h"
 #include "support/test_scenes.h"
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "candela/render/renderer.h"
-#include "candela/scene/scene_loader.h"
+#include "candela/formats/json/scene_loader.h"
 
 namespace candela {
 namespace {

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include "candela/scene/scene_loader.h"
+#include "candela/formats/json/scene_loader.h"
 
 namespace candela {
 namespace {

@@ -5,7 +5,7 @@
 // textured builds its lobes once, at load time (material.h).
 //
 // A new lobe kind adds its parameter struct here (checked by LobeParamsType) and its alternative
-// to LobeParams; the scene loader (scene/scene_materials.cpp) reads it.
+// to LobeParams; the scene loader (formats/json/scene_materials.cpp) reads it.
 #include <cmath>
 #include <concepts>
 #include <cstdint>

@@ -1,0 +1,307 @@
+#include "candela/formats/json/scene_loader.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <system_error>
+
+#include "candela/camera/camera_frame.h"
+#include "candela/scene/enum_names.h"
+#include "candela/formats/json/json_cursor.h"
+#include "candela/scene/memory_budget.h"
+#include "candela/formats/json/scene_sections.h"
+
+namespace candela {
+
+namespace {
+
+constexpr std::array<std::string_view, 8> kSections = {"integrator", "sampler",   "camera", "film",
+                                                       "textures",   "materials", "shapes", "lights"};
+// In the order of CameraType and FovAxis (camera_settings.h).
+constexpr std::array<std::string_view, 2> kCameraTypes = {"perspective", "orthographic"};
+constexpr std::array<std::string_view, 5> kFovAxes = {"x", "y", "diagonal", "smaller", "larger"};
+constexpr int kMaxResolution = 32768;
+constexpr int kMaxSpp = 1 << 24;
+// |sin| of the angle between up and the view direction below which the camera frame is undefined.
+constexpr double kParallelSine = 1e-6;
+
+std::string format_vec(const Vec3f& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
+
+void read_integrator(JsonCursor c, IntegratorSettings& integrator) {
+    if (auto type = c.get("type"))
+        integrator.type =
+            *parse_integrator_type(type->choice("integrator type", integrator_type_names()));
+    if (auto v = c.get("max_depth")) integrator.max_depth = v->integer(Bounds::at_least(1));
+    if (auto v = c.get("rr_depth")) integrator.rr_depth = v->integer(Bounds::at_least(0));
+    if (auto v = c.get("max_distance")) integrator.max_distance = v->number_f(Bounds::above(0));
+    if (auto v = c.get("mis")) integrator.mis = v->boolean();
+    if (auto v = c.get("spectral")) integrator.spectral = v->boolean();
+    if (auto v = c.get("rr")) integrator.rr_probability = v->number_f(Bounds{0.0, 1.0, true, false});
+    if (auto v = c.get("light_selection"))
+        integrator.light_selection =
+            *parse_light_selection(v->choice("light selection", light_selection_names()));
+    c.reject_unknown_keys();
+}
+
+void read_sampler(JsonCursor c, SamplerSettings& sampler) {
+    if (auto v = c.get("type")) sampler.type = *parse_sampler_type(v->choice("sampler type", sampler_type_names()));
+    if (auto v = c.get("spp")) sampler.spp = v->integer(Bounds::closed(1, kMaxSpp));
+    if (auto v = c.get("seed")) sampler.seed = v->unsigned_integer();
+    c.reject_unknown_keys();
+}
+
+// The film is the first large allocation a render makes, so it is charged first.
+void check_film_memory(const CameraSettings& camera, const JsonCursor& at, MemoryBudget& budget) {
+    if (auto refused = budget.charge(film_memory_bytes(camera.width, camera.height),
+                                     fmt::format("a {}x{} film", camera.width, camera.height)))
+        at.fail(*refused);
+}
+
+// The camera frame needs a view direction and an up vector not parallel to it. The error points at
+// the key most likely to be wrong among those given (defaults cannot be wrong on their own).
+void check_camera_frame(const CameraSettings& camera, const JsonCursor& c,
+                        const std::optional<JsonCursor>& position,
+                        const std::optional<JsonCursor>& look_at,
+                        const std::optional<JsonCursor>& up) {
+    Vec3f forward = camera.look_at - camera.position;
+    if (!is_finite(forward)) {
+        const JsonCursor& at = look_at ? *look_at : position ? *position : c;
+        at.fail(fmt::format("look_at {} is too far from position {}: the view direction overflows "
+                            "float range",
+                            format_vec(camera.look_at), format_vec(camera.position)));
+    }
+    if (forward == Vec3f(0.0f)) {
+        const JsonCursor& at = look_at ? *look_at : position ? *position : c;
+        at.fail(fmt::format("look_at equals position {}; the camera has no view direction",
+                            format_vec(camera.position)));
+    }
+    Vec3d f = normalize(Vec3d(forward));
+    Vec3d u = normalize(Vec3d(camera.up));
+    if (!(length(cross(f, u)) > kParallelSine)) {
+        const JsonCursor& at = up ? *up : look_at ? *look_at : position ? *position : c;
+        at.fail(
+            fmt::format("up {} is parallel to the view direction {}; the camera cannot tell "
+                        "which way is up",
+                        format_vec(camera.up), format_vec(Vec3f(f))));
+    }
+}
+
+template <class E, size_t N>
+E enum_of(std::string_view name, const std::array<std::string_view, N>& names) {
+    return E(std::find(names.begin(), names.end(), name) - names.begin());
+}
+
+// `key` belongs to the other camera type: say which, rather than calling it unknown.
+[[noreturn]] void fail_other_type_key(const JsonCursor& c, std::string_view key, CameraType type) {
+    const bool perspective = type == CameraType::kPerspective;
+    c.document().fail_at_key(
+        c.pointer(), key,
+        fmt::format("{} is a key of the {} camera; {} camera takes {}", json_quoted(key),
+                    perspective ? "orthographic" : "perspective",
+                    perspective ? "a perspective" : "an orthographic",
+                    perspective ? "\"fov\" (degrees)" : "\"height\" (the image's height in scene units)"));
+}
+
+// The projection: fov and fov_axis for perspective, height for orthographic.
+void read_projection(JsonCursor& c, CameraSettings& camera) {
+    if (camera.type == CameraType::kPerspective) {
+        if (c.has("height")) fail_other_type_key(c, "height", camera.type);
+        if (auto v = c.get("fov")) camera.fov_degrees = v->number_f(Bounds::open(0, 180));
+        if (auto v = c.get("fov_axis")) camera.fov_axis = enum_of<FovAxis>(v->choice("fov axis", kFovAxes), kFovAxes);
+        return;
+    }
+    for (std::string_view key : {"fov", "fov_axis"})
+        if (c.has(key)) fail_other_type_key(c, key, camera.type);
+    camera.ortho_height = c.require("height").number_f(Bounds::above(0));
+}
+
+// A thin lens: aperture_radius (0: none) and focus_distance (default: the distance to look_at).
+void read_lens(JsonCursor& c, CameraSettings& camera) {
+    if (auto v = c.get("aperture_radius")) camera.aperture_radius = v->number_f(Bounds::at_least(0));
+    if (auto v = c.get("focus_distance")) camera.focus_distance = v->number_f(Bounds::above(0));
+}
+
+// Camera rays within float range: the orthographic film's width, and a thin lens's rays towards
+// the corners of the focus plane (whose length normalize() squares).
+void check_camera_extent(const CameraSettings& camera, JsonCursor& c) {
+    const bool orthographic = camera.type == CameraType::kOrthographic;
+    if (orthographic && !std::isfinite(orthographic_half_extents(camera).x + camera.aperture_radius))
+        c.require("height").fail(fmt::format(
+            "the film's width ({} times the aspect ratio, plus the aperture) overflows float range", camera.ortho_height));
+    if (camera.aperture_radius == 0.0f) return;
+    const Vec2f half = orthographic ? Vec2f(0.0f, 0.0f) : perspective_half_extents(camera);
+    const float f = resolved_focus_distance(camera), r = camera.aperture_radius;
+    const Vec3f corner(f * half.x + r, f * half.y + r, f);
+    if (!std::isfinite(dot(corner, corner))) {
+        const std::optional<JsonCursor> focus = c.get("focus_distance");
+        (focus ? *focus : c.require("aperture_radius"))
+            .fail(fmt::format("a thin lens of aperture_radius {} focused at {} gives rays beyond float range", r, f));
+    }
+}
+
+void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget& budget) {
+    if (auto type = c.get("type"))
+        camera.type = enum_of<CameraType>(type->choice("camera type", kCameraTypes), kCameraTypes);
+    auto position = c.get("position");
+    auto look_at = c.get("look_at");
+    auto up = c.get("up");
+    if (position) camera.position = position->vec3f();
+    if (look_at) camera.look_at = look_at->vec3f();
+    if (up) {
+        camera.up = up->vec3f();
+        if (camera.up == Vec3f(0.0f)) up->fail_expected("a nonzero up vector");
+    }
+    read_projection(c, camera);
+    if (auto v = c.get("resolution")) {
+        auto wh = v->elements(2, "an array of 2 integers [width, height]");
+        camera.width = wh[0].integer(Bounds::closed(1, kMaxResolution));
+        camera.height = wh[1].integer(Bounds::closed(1, kMaxResolution));
+        check_film_memory(camera, *v, budget);
+    }
+    if (auto v = c.get("near")) camera.near = v->number_f(Bounds::at_least(0));
+    read_lens(c, camera);
+    c.reject_unknown_keys();
+    check_camera_frame(camera, c, position, look_at, up);
+    check_camera_extent(camera, c);
+}
+
+// The sensor's keys (film/sensor.h): iso and exposure_time give the imaging ratio, which must
+// stay a positive float; white_balance is 0 or a temperature.
+void read_sensor(JsonCursor& c, FilmSettings& film) {
+    std::optional<JsonCursor> last;  // where an imaging ratio out of float range is reported
+    if (auto v = c.get("iso")) {
+        film.iso = v->number_f(Bounds::above(0));
+        last = v;
+    }
+    if (auto v = c.get("exposure_time")) {
+        film.exposure_time = v->number_f(Bounds::above(0));
+        last = v;
+    }
+    const float ratio = imaging_ratio(film);
+    if (last && !(ratio > 0.0f && std::isfinite(ratio)))
+        last->fail(fmt::format("the imaging ratio exposure_time * iso / 100 = {:g} * {:g} / 100 is {}", film.exposure_time,
+                               film.iso, ratio > 0.0f ? "beyond float range" : "below float range (0)"));
+    if (auto v = c.get("white_balance")) {
+        film.white_balance = v->number_f(Bounds::at_least(0));
+        if (film.white_balance != 0.0f && film.white_balance < kMinWhiteBalanceKelvin)
+            v->fail_expected(fmt::format("0 (no white balance) or a temperature >= {} (kelvin)", kMinWhiteBalanceKelvin));
+    }
+}
+
+void read_film(JsonCursor c, FilmSettings& film) {
+    if (auto v = c.get("filter"))
+        film.filter = *parse_filter_type(v->choice("filter", filter_type_names()));
+    if (auto v = c.get("tonemap"))
+        film.tonemap = *parse_tonemap(v->choice("tone map", tonemap_names()));
+    if (auto v = c.get("exposure")) film.exposure = v->number_f(Bounds::closed_open(0, 1));
+    if (auto v = c.get("transfer"))
+        film.transfer = *parse_transfer(v->choice("transfer", transfer_names()));
+    if (auto v = c.get("gamma")) film.gamma = v->number_f(Bounds::above(0));
+    read_sensor(c, film);
+    c.reject_unknown_keys();
+}
+
+std::string read_text_file(const std::filesystem::path& file) {
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(file, ec);
+    if (status.type() == std::filesystem::file_type::not_found)
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "scene file not found");
+    if (ec)  // a symbolic link loop, a folder we may not search
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""},
+                         fmt::format("cannot access scene file: {}", ec.message()));
+    // Other kinds than folders are allowed: a pipe, as in `candela render <(make_scene)`.
+    if (status.type() == std::filesystem::file_type::directory)
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "is a folder, not a scene file");
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""},
+                         fmt::format("cannot open scene file: {}", std::strerror(errno)));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad())
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "cannot read scene file");
+    return std::move(text).str();
+}
+
+// pbrt-v4 warns the same way: a black image after hours of rendering is a poor way to find out.
+void warn_if_unlit(Scene& scene) {
+    const IntegratorType t = scene.integrator.type;
+    if (t != IntegratorType::kPath && t != IntegratorType::kBsdf && t != IntegratorType::kWhitted) return;
+    if (scene.environment || !scene.delta_lights.empty()) return;
+    for (const Shape& shape : scene.shapes)
+        if (!shape.emission.is_black()) return;
+    scene.warnings.push_back(
+        SceneError(SourceLocation{scene.file.string(), 0, 0, ""},
+                   fmt::format("the scene has no lights (no shape has an emission and there is no "
+                               "environment, point, spot or directional light); the {} integrator "
+                               "will render a black image",
+                               integrator_type_name(t)))
+            .formatted());
+}
+
+}  // namespace
+
+std::filesystem::path referenced_file(const JsonCursor& file, const std::filesystem::path& folder,
+                                      std::string_view what) {
+    std::string name = file.string();
+    if (name.empty()) file.fail_expected(fmt::format("the name of a {} file", what));
+    // operator/ keeps an absolute name as it is.
+    std::filesystem::path path = folder / std::filesystem::path(name);
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (status.type() == std::filesystem::file_type::not_found)
+        file.fail(fmt::format("{} file {} not found (looked for {})", what, json_quoted(name),
+                              path.string()));
+    if (ec)
+        file.fail(fmt::format("cannot access {} file {}: {}", what, json_quoted(name), ec.message()));
+    if (status.type() == std::filesystem::file_type::directory)
+        file.fail(fmt::format("{} file {} is a folder, not a file", what, json_quoted(name)));
+    if (status.type() != std::filesystem::file_type::regular)
+        file.fail(fmt::format("{} file {} is not a regular file", what, json_quoted(name)));
+    return path;
+}
+
+void add_warning(Scene& scene, const JsonCursor& at, const std::string& message) {
+    scene.warnings.push_back(SceneError(at.document().locate(at.pointer()), message).formatted());
+}
+
+Scene load_scene(const std::filesystem::path& file, const LoadOptions& options) {
+    return load_scene_from_string(read_text_file(file), file, options);
+}
+
+Scene load_scene_from_string(std::string_view json, const std::filesystem::path& file,
+                             const LoadOptions& options) {
+    JsonDocument document{std::string(json), file.string()};
+    JsonCursor root = document.root();
+    // Unknown sections first: a misspelt "materials" would otherwise surface as an undefined
+    // material in `shapes`, far from the typo.
+    for (std::string_view section : kSections) root.has(section);
+    root.reject_unknown_keys();
+
+    Scene scene;
+    scene.file = file;
+    const std::filesystem::path folder = file.parent_path();
+    MemoryBudget budget(options.memory_limit ? *options.memory_limit : MemoryLimit::of_this_process());
+    if (auto c = root.get("integrator")) read_integrator(*c, scene.integrator);
+    if (auto c = root.get("sampler")) read_sampler(*c, scene.sampler);
+    std::optional<JsonCursor> camera = root.get("camera");
+    if (camera) read_camera(*camera, scene.camera, budget);
+    if (budget.used() == 0) check_film_memory(scene.camera, camera ? *camera : root, budget);
+    if (auto c = root.get("film")) read_film(*c, scene.film);
+    if (auto c = root.get("textures")) read_textures(*c, scene);
+    if (auto c = root.get("materials")) read_materials(*c, scene);
+    if (auto c = root.get("shapes")) read_shapes(*c, folder, scene, budget);
+    if (auto c = root.get("lights")) read_lights(*c, folder, scene, budget);
+    load_texture_images(scene, document, budget);
+    warn_if_unlit(scene);
+    return scene;
+}
+
+}  // namespace candela

@@ -1,0 +1,252 @@
+// The `materials` part of a scene file: each material's lobes as LobeParams (materials/
+// lobe_params.h), whose colours and numbers may be textures (scene_textures.cpp).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "candela/scene/enum_names.h"
+#include "candela/formats/json/scene_sections.h"
+#include "candela/formats/json/scene_spectra.h"
+#include "candela/spectrum/named_spectra.h"
+
+namespace candela {
+
+namespace {
+
+constexpr std::array<std::string_view, 9> kMaterialTypes = {
+    "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "mirror", "mix",
+    "thin_dielectric", "transmission"};
+// The types a `mix` may combine: every material type but `mix` itself.
+constexpr std::array<std::string_view, 8> kLobeMaterialTypes = {
+    "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "mirror",
+    "thin_dielectric", "transmission"};
+constexpr std::array<std::string_view, 2> kFresnelNames = {"exact", "schlick"};
+constexpr std::array<std::string_view, 2> kNormalMapConventions = {"opengl", "directx"};
+// Reflectances above 1 would create energy; negative ones are meaningless.
+constexpr Bounds kReflectance = Bounds::closed(0, 1);
+// A Trowbridge-Reitz alpha: 0 is smooth; there is no upper limit (pbrt-v4 sets none either).
+constexpr Bounds kRoughness = Bounds::at_least(0);
+
+// `roughness`: one alpha for both directions, or [alpha_u, alpha_v]; each a number or texture.
+RoughnessParams read_roughness(const JsonCursor& c, Scene& scene) {
+    if (!c.is_array()) {
+        FloatParam alpha = read_float_param(c, scene, kRoughness);
+        return {alpha, alpha};
+    }
+    std::vector<JsonCursor> pair = c.elements(2, "a roughness: a number or [alpha_u, alpha_v]");
+    return {read_float_param(pair[0], scene, kRoughness), read_float_param(pair[1], scene, kRoughness)};
+}
+
+// True when the roughness is the constant 0: the smooth lobe of before roughness existed.
+bool is_zero(const RoughnessParams& r) {
+    return !r.is_textured() && r.alpha_u.value == 0.0f && r.alpha_v.value == 0.0f;
+}
+
+// `multiscatter`: Kulla & Conty's compensation on a rough conductor or dielectric (off, as pbrt-v4).
+bool read_multiscatter(JsonCursor& c) {
+    std::optional<JsonCursor> v = c.get("multiscatter");
+    return v && v->boolean();
+}
+
+// `conductor`: eta and k, or reflectance, or a measured metal (one of the three, as pbrt-v4
+// takes eta/k or reflectance), and roughness.
+LobeParams read_conductor(JsonCursor& c, Scene& scene) {
+    RoughnessParams roughness;
+    if (auto v = c.get("roughness")) roughness = read_roughness(*v, scene);
+    const bool multiscatter = read_multiscatter(c);
+    std::optional<JsonCursor> eta = c.get("eta"), k = c.get("k"), reflectance = c.get("reflectance");
+    if (std::optional<JsonCursor> metal = c.get("metal")) {
+        if (eta || k || reflectance)
+            (eta ? *eta : k ? *k : *reflectance)
+                .fail("give one of \"metal\", \"eta\" and \"k\", or \"reflectance\"");
+        const std::string_view symbol = metal->choice("metal", metal_names());
+        const MetalIor& ior = metal_ior(*parse_metal(symbol));
+        ColorParam eta_param{ior.eta, kNoTexture, -kUnbounded, kUnbounded, SpectrumForm::kUnbounded};
+        ColorParam k_param{ior.k, kNoTexture, -kUnbounded, kUnbounded, SpectrumForm::kUnbounded};
+        // Spectral mode uses the measured spectra where pbrt-v4 names them (metal-Au-eta, ...);
+        // RGB mode, and spectral mode for a metal without them (Cr, Fe, Ti), the RGB table.
+        const DenseSpectrum* eta_spectrum = named_spectrum(fmt::format("metal-{}-eta", symbol));
+        const DenseSpectrum* k_spectrum = named_spectrum(fmt::format("metal-{}-k", symbol));
+        if (eta_spectrum && k_spectrum) {
+            eta_param.spectrum = scene.textures.add_spectrum(*eta_spectrum);
+            k_param.spectrum = scene.textures.add_spectrum(*k_spectrum);
+        }
+        return ConductorParams{eta_param, k_param, roughness, multiscatter};
+    }
+    if (reflectance) {
+        if (eta || k)
+            (eta ? *eta : *k).fail("give \"eta\" and \"k\" or \"reflectance\", not both");
+        return ConductorReflectanceParams{read_color_param(*reflectance, scene, kReflectance), roughness,
+                                          multiscatter};
+    }
+    if (!eta || !k) c.fail("a conductor needs \"eta\" and \"k\", \"reflectance\" or \"metal\"");
+    return ConductorParams{read_color_param(*eta, scene, Bounds::at_least(0)),
+                           read_color_param(*k, scene, Bounds::at_least(0)), roughness, multiscatter};
+}
+
+// An index of refraction: a number, or a spectrum (a glass that disperses, e.g.
+// {"spectrum": "glass-BK7"}). A spectrum is kept for spectral mode (`spectrum` gets its index in
+// the scene's textures) and the number returned is its value at the d line, 587.6 nm, the index a
+// glass catalogue quotes, which RGB mode uses. A constant spectrum is just that number.
+float read_ior(const JsonCursor& v, Scene& scene, uint32_t& spectrum) {
+    std::optional<DenseSpectrum> s = read_spectrum(v, scene.file.parent_path());
+    if (!s) return v.number_f(Bounds::above(0));
+    for (float x : s->v)
+        if (!(x > 0.0f)) v.fail(fmt::format("an index of refraction must be > 0 at every wavelength, got {}", x));
+    const float d_line = (*s)(587.6f);
+    if (std::all_of(s->v.begin(), s->v.end(), [&](float x) { return x == s->v[0]; })) return d_line;
+    spectrum = scene.textures.add_spectrum(*s);
+    return d_line;
+}
+
+// What both coated materials share: the coat (its roughness under `roughness_key`) and the
+// medium beneath it. pbrt-v4's names: uroughness/vroughness (or interface.*), eta (or
+// interface.eta), thickness, albedo, g, maxdepth, nsamples.
+CoatParams read_coat(JsonCursor& c, Scene& scene, std::string_view roughness_key) {
+    CoatParams p;
+    if (auto v = c.get(roughness_key)) p.roughness = read_roughness(*v, scene);
+    if (auto v = c.get("ior")) p.ior = v->number_f(Bounds::above(0));
+    if (auto v = c.get("thickness")) p.thickness = read_float_param(*v, scene, Bounds::at_least(0));
+    if (auto v = c.get("medium_albedo")) p.medium_albedo = read_color_param(*v, scene, kReflectance);
+    if (auto v = c.get("g")) p.g = read_float_param(*v, scene, Bounds::closed(-1, 1));
+    if (auto v = c.get("maxdepth")) p.max_depth = static_cast<uint16_t>(v->integer(Bounds::closed(0, 65535)));
+    if (auto v = c.get("nsamples")) p.n_samples = static_cast<uint16_t>(v->integer(Bounds::closed(1, 65535)));
+    return p;
+}
+
+CoatedDiffuseParams read_coated_diffuse(JsonCursor& c, Scene& scene) {
+    CoatedDiffuseParams p;
+    p.coat = read_coat(c, scene, "roughness");
+    if (auto v = c.get("albedo")) p.albedo = read_color_param(*v, scene, kReflectance);
+    return p;
+}
+
+CoatedConductorParams read_coated_conductor(JsonCursor& c, Scene& scene) {
+    CoatedConductorParams p;
+    p.coat = read_coat(c, scene, "interface_roughness");
+    if (auto v = c.get("conductor_roughness")) p.conductor_roughness = read_roughness(*v, scene);
+    std::optional<JsonCursor> eta = c.get("conductor_eta"), k = c.get("conductor_k");
+    if (auto r = c.get("reflectance")) {
+        // pbrt-v4 refuses both forms of the base's colour at once; without either, the base is
+        // its default copper (each of eta and k defaults on its own, as in pbrt-v4).
+        if (eta || k)
+            (eta ? *eta : *k).fail("give \"conductor_eta\" and \"conductor_k\" or \"reflectance\", not both");
+        p.reflectance = read_color_param(*r, scene, kReflectance);
+        p.from_reflectance = true;
+    }
+    if (eta) p.conductor_eta = read_color_param(*eta, scene, Bounds::above(0));
+    if (k) p.conductor_k = read_color_param(*k, scene, Bounds::at_least(0));
+    return p;
+}
+
+// The lobe of a material of one of kLobeMaterialTypes, whose `type` (already read) is `type`.
+LobeParams read_lobe(JsonCursor& c, std::string_view type, Scene& scene) {
+    if (type == "coated_diffuse") return read_coated_diffuse(c, scene);
+    if (type == "coated_conductor") return read_coated_conductor(c, scene);
+    if (type == "diffuse") {
+        DiffuseParams p;
+        if (auto v = c.get("albedo")) p.albedo = read_color_param(*v, scene, kReflectance);
+        return p;
+    }
+    if (type == "mirror") {
+        MirrorParams p;
+        if (auto v = c.get("albedo")) p.albedo = read_color_param(*v, scene, kReflectance);
+        return p;
+    }
+    if (type == "conductor") return read_conductor(c, scene);
+    float ior = 1.5f;
+    uint32_t ior_spectrum = kNoSpectrum;
+    if (auto v = c.get("ior")) ior = read_ior(*v, scene, ior_spectrum);
+    if (type == "thin_dielectric") {
+        ThinDielectricParams p{ior};
+        p.ior_spectrum = ior_spectrum;
+        return p;
+    }
+    ColorParam tint{Rgb(1.0f)};
+    if (auto v = c.get("tint")) tint = read_color_param(*v, scene, kReflectance);
+    if (type == "transmission") {
+        TransmissionParams p{ior, tint};
+        p.ior_spectrum = ior_spectrum;
+        return p;
+    }
+    std::optional<JsonCursor> fresnel = c.get("fresnel");
+    bool schlick = fresnel && fresnel->choice("fresnel", kFresnelNames) == "schlick";
+    RoughnessParams roughness;
+    if (auto v = c.get("roughness")) roughness = read_roughness(*v, scene);
+    // Smooth glass loses nothing between microfacets: multiscatter changes nothing there.
+    const bool multiscatter = read_multiscatter(c);
+    // Roughness 0 keeps the smooth lobe of version 1 (and its images, bit for bit).
+    if (is_zero(roughness)) {
+        DielectricParams p{ior, tint, schlick};
+        p.ior_spectrum = ior_spectrum;
+        return p;
+    }
+    if (schlick) fresnel->fail("fresnel \"schlick\" is for a smooth dielectric (roughness 0)");
+    RoughDielectricParams p{ior, tint, roughness, multiscatter};
+    p.ior_spectrum = ior_spectrum;
+    return p;
+}
+
+// `mix`: 1 to Bsdf::kMaxLobes materials of the other types, their lobes in one material. Mixes do
+// not nest, so each part is one lobe and the count bounds the lobes.
+Material read_mix(JsonCursor& c, Scene& scene) {
+    JsonCursor lobes = c.require("lobes");
+    std::vector<JsonCursor> parts = lobes.elements();
+    if (parts.empty() || parts.size() > Bsdf::kMaxLobes)
+        lobes.fail_expected(fmt::format("an array of 1 to {} materials", Bsdf::kMaxLobes));
+    std::vector<LobeParams> params;
+    for (JsonCursor& part : parts) {
+        JsonCursor type_cursor = part.require("type");
+        if (type_cursor.is_string() && type_cursor.string() == "mix")
+            type_cursor.fail(fmt::format("a mix cannot contain a mix; expected one of: {}",
+                                         names_list(kLobeMaterialTypes)));
+        std::string_view type = type_cursor.choice("material type", kLobeMaterialTypes);
+        params.push_back(read_lobe(part, type, scene));
+        part.reject_unknown_keys();
+    }
+    return make_material(params);
+}
+
+// The keys every material takes (a mix's, not its parts'): normal_map (an image file, a colour
+// texture, or a constant that tilts the normal the same way everywhere), normal_map_convention,
+// bump_map, alpha.
+SurfaceParams read_surface(JsonCursor& c, Scene& scene) {
+    SurfaceParams s;
+    std::optional<JsonCursor> normal_map = c.get("normal_map");
+    if (normal_map) s.normal_map = read_normal_map_param(*normal_map, scene);
+    if (auto v = c.get("normal_map_convention")) {
+        if (!normal_map) v->fail("normal_map_convention needs a normal_map");
+        s.normal_map_convention = v->choice("normal map convention", kNormalMapConventions) == "directx"
+                                      ? NormalMapConvention::kDirectX
+                                      : NormalMapConvention::kOpenGl;
+    }
+    if (auto v = c.get("bump_map")) {
+        if (normal_map) v->fail("give \"normal_map\" or \"bump_map\", not both");
+        s.bump_map = read_float_param(*v, scene, Bounds{});
+    }
+    if (auto v = c.get("alpha")) s.alpha = read_float_param(*v, scene, Bounds::closed(0, 1));
+    return s;
+}
+
+Material read_material(JsonCursor c, Scene& scene) {
+    std::string_view type = c.require("type").choice("material type", kMaterialTypes);
+    Material material = type == "mix" ? read_mix(c, scene) : make_material(read_lobe(c, type, scene));
+    set_surface(material, read_surface(c, scene));
+    c.reject_unknown_keys();
+    return material;
+}
+
+}  // namespace
+
+void read_materials(JsonCursor materials, Scene& scene) {
+    for (auto& [name, c] : materials.members()) {
+        scene.materials.push_back(read_material(c, scene));
+        scene.material_names.push_back(name);
+    }
+}
+
+}  // namespace candela

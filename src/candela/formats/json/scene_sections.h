@@ -1,0 +1,81 @@
+#pragma once
+// The readers for the parts of a scene file, shared by the scene loader's source files (internal to
+// scene/). Each takes a cursor on its part, fills the Scene, and rejects keys it did not read.
+#include <filesystem>
+#include <string_view>
+#include <utility>
+
+#include "candela/core/error.h"
+#include "candela/math/transform.h"
+#include "candela/formats/json/json_cursor.h"
+#include "candela/scene/memory_budget.h"
+#include "candela/scene/scene.h"
+
+namespace candela {
+
+// `transform`: an array of one-key steps (translate, scale, rotate, matrix), the first listed
+// applied first.
+Transform read_transform(const JsonCursor& steps);
+
+// `textures`: name -> texture, read before the materials that name them. A texture may name
+// textures defined after it (but not itself, through any chain). The image files are read later,
+// by load_texture_images.
+void read_textures(JsonCursor textures, Scene& scene);
+
+// Reads the image files scene.texture_files lists (each once) into scene.textures, charging
+// each to `budget` before its texels are allocated. Errors are located at the `file` key that
+// first names the file.
+void load_texture_images(Scene& scene, const JsonDocument& document, MemoryBudget& budget);
+
+// `materials`: name -> material, in file order.
+void read_materials(JsonCursor materials, Scene& scene);
+
+// A colour parameter of a material: a constant (one number or [r, g, b], each within `bounds`),
+// `{"texture": NAME}` naming one of the `textures`, or a texture object written in place. A
+// texture's value is clamped to `bounds` where it is looked up (texture_param.h).
+ColorParam read_color_param(const JsonCursor& c, Scene& scene, const Bounds& bounds);
+// A number parameter of a material: a constant within `bounds`, or a texture as above, read as
+// a number (textures/texture_kinds.h).
+FloatParam read_float_param(const JsonCursor& c, Scene& scene, const Bounds& bounds);
+
+// A material's `normal_map`: a file name (an image texture of it, read linearly, repeating), or
+// a colour parameter in [0, 1] as read_color_param reads it.
+ColorParam read_normal_map_param(const JsonCursor& c, Scene& scene);
+
+// `shapes`: meshes (loaded relative to `folder`, each charged to `budget` before it is built),
+// quads, spheres and disks; needs the materials.
+void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene,
+                 MemoryBudget& budget);
+
+// `lights`: at most one environment, charged to `budget`, and point, spot and directional lights;
+// needs the integrator (bsdf cannot see delta lights).
+void read_lights(const JsonCursor& lights, const std::filesystem::path& folder, Scene& scene,
+                 MemoryBudget& budget);
+
+// Adds "file:line:col: /pointer: message", located at `at`, to scene.warnings.
+void add_warning(Scene& scene, const JsonCursor& at, const std::string& message);
+
+// The path a `file` key names, relative to `folder` unless absolute. Fails at the key when there
+// is no such regular file; `what` names the kind ("mesh", "environment image").
+std::filesystem::path referenced_file(const JsonCursor& file, const std::filesystem::path& folder,
+                                      std::string_view what);
+
+// Runs `load` (load_mesh, read_image). A SceneError it throws keeps its own location (the mesh or
+// image file, with line where known) and gains " (referenced by /pointer at scene:line:col)".
+template <class Load>
+auto load_referenced(const JsonDocument& document, const std::string& pointer, Load&& load) {
+    try {
+        return std::forward<Load>(load)();
+    } catch (const SceneError& e) {
+        SourceLocation at = document.locate(pointer);
+        throw SceneError(e.where(), e.message() + " (referenced by " + at.json_pointer + " at " +
+                                        at.file + ":" + std::to_string(at.line) + ":" +
+                                        std::to_string(at.column) + ")");
+    }
+}
+template <class Load>
+auto load_referenced(const JsonCursor& file, Load&& load) {
+    return load_referenced(file.document(), file.pointer(), std::forward<Load>(load));
+}
+
+}  // namespace candela

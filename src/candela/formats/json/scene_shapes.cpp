@@ -1,0 +1,244 @@
+// The `shapes` part of a scene file.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "candela/geometry/disk.h"
+#include "candela/scene/enum_names.h"
+#include "candela/formats/mesh/mesh_loader.h"
+#include "candela/formats/json/scene_sections.h"
+#include "candela/formats/json/scene_spectra.h"
+
+namespace candela {
+
+namespace {
+
+constexpr std::array<std::string_view, 4> kShapeTypes = {"mesh", "sphere", "quad", "disk"};
+// |sin| of the angle between a quad's edges below which it has no usable area or normal.
+constexpr double kParallelSine = 1e-6;
+
+std::string format_vec(const Vec3f& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
+
+uint32_t material_index(const JsonCursor& c, const Scene& scene) {
+    std::string name = c.string();
+    for (size_t i = 0; i < scene.material_names.size(); ++i)
+        if (scene.material_names[i] == name) return static_cast<uint32_t>(i);
+    if (scene.material_names.empty())
+        c.fail(fmt::format("unknown material {}; no materials are defined", json_quoted(name)));
+    std::vector<std::string_view> names(scene.material_names.begin(), scene.material_names.end());
+    c.fail(fmt::format("unknown material {}; defined materials: {}", json_quoted(name),
+                       names_list(names)));
+}
+
+Sphere read_sphere(JsonCursor& c, bool reverse_orientation) {
+    Sphere s;
+    s.center = c.require("center").vec3();
+    s.radius = c.require("radius").number(Bounds::above(0));
+    s.reverse_orientation = reverse_orientation;
+    return s;
+}
+
+TriangleMesh read_quad(JsonCursor& c) {
+    JsonCursor corner = c.require("corner"), edge1 = c.require("edge1"), edge2 = c.require("edge2");
+    Vec3f p = corner.vec3f(), e1 = edge1.vec3f(), e2 = edge2.vec3f();
+    if (e1 == Vec3f(0.0f)) edge1.fail_expected("a nonzero edge");
+    if (e2 == Vec3f(0.0f)) edge2.fail_expected("a nonzero edge");
+    Vec3d d1(e1), d2(e2);
+    if (!(length(cross(d1, d2)) > kParallelSine * length(d1) * length(d2)))
+        edge2.fail(fmt::format("edge2 {} is parallel to edge1 {}; the quad has no area",
+                               format_vec(e2), format_vec(e1)));
+    return make_quad(p, e1, e2);
+}
+
+// `disk`: centre, front normal and radius, then the transform (object to world) and
+// reverse_orientation. The disk stays in double; what must hold in float is checked here, because
+// hits and light samples are float: its bounds within float range and its area above 0.
+Disk read_disk(JsonCursor& c, bool reverse_orientation) {
+    JsonCursor center = c.require("center"), normal = c.require("normal"), radius = c.require("radius");
+    Vec3d n = normal.vec3();
+    if (!is_finite(normalize(n))) normal.fail_expected("a nonzero normal");
+    double r = radius.number(Bounds::above(0));
+    Disk disk = make_round_disk(center.vec3(), n, r);
+    std::optional<JsonCursor> transform = c.get("transform");
+    Transform to_world;
+    if (transform) to_world = read_transform(*transform);
+    c.reject_unknown_keys();
+    disk = transform_disk(disk, to_world, reverse_orientation);
+    const JsonCursor& blame = transform ? *transform : radius;
+    // The axes an invertible transform leaves are never parallel, but they may be nearly so.
+    const double spanned = length(cross(disk.axis_u, disk.axis_v));
+    if (!(spanned > kParallelSine * length(disk.axis_u) * length(disk.axis_v)))
+        blame.fail("the transform flattens the disk to a line; it has no area");
+    Vec3d half(std::hypot(disk.axis_u.x, disk.axis_v.x), std::hypot(disk.axis_u.y, disk.axis_v.y),
+               std::hypot(disk.axis_u.z, disk.axis_v.z));
+    if (!is_finite(Vec3f(disk.center - half)) || !is_finite(Vec3f(disk.center + half)))
+        blame.fail(transform ? "the transform moves the disk beyond float range"
+                             : "the disk reaches beyond float range");
+    const auto area = static_cast<float>(disk.area());
+    if (!(area > 0.0f) || !std::isfinite(1.0f / area))
+        blame.fail(transform ? "the transform leaves the disk with no area in float precision"
+                             : "the disk has no area in float precision (its radius is too small)");
+    return disk;
+}
+
+// Triangles whose area is zero or not finite in float (repeated or collinear corners, or sizes
+// beyond float range, as the transformed mesh has them) cannot be hit and give an emitting mesh
+// nothing to sample: they are removed. Returns how many there were and the first one's index.
+struct Degenerate {
+    size_t count = 0;
+    size_t first = 0;
+};
+
+Degenerate remove_degenerate_triangles(TriangleMesh& mesh) {
+    Degenerate removed;
+    size_t kept = 0;
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        const uint32_t* i = &mesh.indices[3 * t];
+        const Vec3f& p0 = mesh.positions[i[0]];
+        const float area2 = length_squared(cross(mesh.positions[i[1]] - p0, mesh.positions[i[2]] - p0));
+        if (area2 > 0.0f && std::isfinite(area2)) {
+            std::copy(i, i + 3, &mesh.indices[3 * kept++]);
+        } else if (removed.count++ == 0) {
+            removed.first = t;
+        }
+    }
+    mesh.indices.resize(3 * kept);
+    return removed;
+}
+
+// A mesh file keeps its usable triangles, with a warning (a pbrt or Mitsuba user expects scanned
+// and exported meshes to contain a few); with none left it is an error, as an empty file is.
+void drop_degenerate_triangles(TriangleMesh& mesh, const JsonCursor& file, Scene& scene) {
+    const size_t total = mesh.triangle_count();
+    const Degenerate removed = remove_degenerate_triangles(mesh);
+    if (removed.count == 0) return;
+    if (removed.count == total)
+        file.fail(fmt::format("all {} triangles of mesh file {} have zero area (degenerate)", total,
+                              json_quoted(file.string())));
+    add_warning(scene, file,
+                fmt::format("mesh file {}: skipped {} of {} triangles that have zero area (degenerate; "
+                            "the first is triangle {})",
+                            json_quoted(file.string()), removed.count, total, removed.first + 1));
+}
+
+// What loading a mesh file will need, charged before it is built; refused, the error names the
+// file (load_referenced adds the scene key).
+MeshSizeCheck budget_check(const std::filesystem::path& path, const std::string& name,
+                           MemoryBudget& budget) {
+    return [&budget, path, name](const MeshSize& size) {
+        const std::string what = fmt::format("mesh file {} ({} vertices, {}{} triangles)", json_quoted(name),
+                                             size.vertices, size.corners == 0 ? "at least " : "",
+                                             size.triangles);
+        if (auto refused = budget.charge(mesh_memory_bytes(size.vertices, size.triangles, size.normals, size.uvs),
+                                         what, mesh_loading_memory_bytes(size.vertices, size.corners)))
+            throw SceneError(SourceLocation{path.string(), 0, 0, {}}, *refused);
+    };
+}
+
+void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene, MemoryBudget& budget) {
+    std::string_view type = c.require("type").choice("shape type", kShapeTypes);
+    Shape shape;
+    shape.material = material_index(c.require("material"), scene);
+    std::optional<JsonCursor> emission_scale = c.get("emission_scale");
+    if (auto v = c.get("emission")) {
+        // pbrt-v4's area light: its `L` (RGB, or a spectrum normalized to luminance 1) times
+        // its `scale`.
+        std::optional<LightSpectrum> spectrum = read_light_spectrum(*v, scene.file.parent_path());
+        shape.emission = spectrum ? spectrum->rgb : v->colour(Bounds::at_least(0));
+        float scale = 1.0f;
+        if (emission_scale) {
+            scale = emission_scale->number_f(Bounds::above(0));
+            shape.emission *= scale;
+            if (!shape.emission.is_finite()) emission_scale->fail("the emission overflows float range");
+        }
+        if (spectrum && !shape.emission.is_black()) {
+            spectrum->normalized *= scale;
+            shape.emission_spectrum = scene.textures.add_spectrum(spectrum->normalized);
+        }
+        // Zero is the default, so stating it is likely a light switched off or a mistake.
+        if (shape.emission.is_black())
+            add_warning(scene, *v,
+                        "emission 0: the shape is not a light (leave the key out for a shape that "
+                        "does not emit)");
+        // Light sampling would count the whole surface while rays pass through its cut-out
+        // parts: the two estimates of its light would disagree.
+        else if (scene.materials[shape.material].surface.cuts_out())
+            v->fail(fmt::format("a light cannot be cut out: its material {} has alpha < 1",
+                                json_quoted(scene.material_names[shape.material])));
+    } else if (emission_scale) {
+        emission_scale->fail("emission_scale without emission: the shape is not a light");
+    }
+    if (auto v = c.get("two_sided")) shape.two_sided = v->boolean();
+    bool reverse_orientation = false;
+    if (auto v = c.get("reverse_orientation")) reverse_orientation = v->boolean();
+
+    if (type == "sphere") {
+        // Spheres take no transform: Sphere stores the world-space centre and radius exactly.
+        Sphere sphere = read_sphere(c, reverse_orientation);
+        c.reject_unknown_keys();
+        shape.kind = ShapeKind::kSphere;
+        shape.index = static_cast<uint32_t>(scene.spheres.size());
+        scene.spheres.push_back(sphere);
+        scene.shapes.push_back(shape);
+        return;
+    }
+
+    if (type == "disk") {
+        Disk disk = read_disk(c, reverse_orientation);
+        shape.kind = ShapeKind::kDisk;
+        shape.index = static_cast<uint32_t>(scene.disks.size());
+        scene.disks.push_back(disk);
+        scene.shapes.push_back(shape);
+        return;
+    }
+
+    Transform to_world;
+    std::optional<JsonCursor> transform = c.get("transform");
+    if (transform) to_world = read_transform(*transform);
+    TriangleMesh mesh;
+    if (type == "quad") {
+        std::optional<JsonCursor> edge2 = c.get("edge2");
+        mesh = read_quad(c);
+        c.reject_unknown_keys();
+        transform_mesh(mesh, to_world, reverse_orientation);
+        // The edges were checked in double; in float, or scaled by the transform, the area may
+        // still vanish (edges of 1e-30 have a product that underflows).
+        if (remove_degenerate_triangles(mesh).count > 0)
+            (transform ? *transform : *edge2)
+                .fail(transform ? "the transform leaves the quad with no area in float precision"
+                                : "the quad has no area in float precision (its edges are too short)");
+    } else {
+        JsonCursor file = c.require("file");
+        std::filesystem::path path = referenced_file(file, folder, "mesh");
+        // Every key is checked before the (possibly slow) load.
+        c.reject_unknown_keys();
+        mesh = load_referenced(file, [&] { return load_mesh(path, budget_check(path, file.string(), budget)); });
+        if (mesh.triangle_count() == 0)
+            file.fail(fmt::format("mesh file {} has no triangles", json_quoted(file.string())));
+        transform_mesh(mesh, to_world, reverse_orientation);
+        for (size_t i = 0; i < mesh.positions.size(); ++i)
+            if (!is_finite(mesh.positions[i]))
+                (transform ? *transform : file)
+                    .fail(fmt::format("the transform moves vertex {} of mesh file {} beyond float range", i + 1,
+                                      json_quoted(file.string())));
+        drop_degenerate_triangles(mesh, file, scene);
+    }
+    shape.kind = ShapeKind::kMesh;
+    shape.index = static_cast<uint32_t>(scene.meshes.size());
+    scene.meshes.push_back(std::move(mesh));
+    scene.shapes.push_back(shape);
+}
+
+}  // namespace
+
+void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene,
+                 MemoryBudget& budget) {
+    for (const JsonCursor& c : shapes.elements()) read_shape(c, folder, scene, budget);
+}
+
+}  // namespace candela

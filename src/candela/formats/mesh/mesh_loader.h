@@ -1,0 +1,14 @@
+#pragma once
+// Loads a triangle mesh file in object space, by extension: .obj (tinyobjloader) or .ply.
+// Throws SceneError naming the file (and line, where the format has lines) on bad input.
+#include <filesystem>
+
+#include "candela/geometry/triangle_mesh.h"
+#include "candela/formats/mesh/mesh_size.h"
+
+namespace candela {
+
+// `check`, when given, sees the mesh's size before it is built, and may throw to refuse it.
+TriangleMesh load_mesh(const std::filesystem::path& file, const MeshSizeCheck& check = {});
+
+}  // namespace candela
