@@ -1,0 +1,20 @@
+#pragma once
+// The pbrt-v4 scene-file parser: tokenizes a file as it streams it (bounded memory however large
+// the file), reads directives and their parameter lists, follows Include and Import (paths
+// relative to the including file's folder; a cycle is an error), and calls the Target for each
+// directive. Syntax errors throw SceneError located as `file:line:col: message`, with the chain
+// of includes named (pbrt_location.h).
+#include <filesystem>
+#include <string_view>
+
+#include "candela/formats/pbrt/pbrt_target.h"
+
+namespace candela::pbrt {
+
+// Parses `file` (as the user named it; messages show it so) and everything it includes.
+void parse_file(const std::filesystem::path& file, Target& target);
+
+// Parses text held in memory, as if it were the file `name` (its folder resolves Includes).
+void parse_string(std::string_view text, const std::filesystem::path& name, Target& target);
+
+}  // namespace candela::pbrt
