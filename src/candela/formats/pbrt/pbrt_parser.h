@@ -4,6 +4,7 @@
 // relative to the including file's folder; a cycle is an error), and calls the Target for each
 // directive. Syntax errors throw SceneError located as `file:line:col: message`, with the chain
 // of includes named (pbrt_location.h).
+#include <cstddef>
 #include <filesystem>
 #include <string_view>
 
@@ -11,10 +12,16 @@
 
 namespace candela::pbrt {
 
+struct ParseOptions {
+    size_t chunk_size = size_t(1) << 20;  // bytes read at a time from each open file
+    int max_include_depth = 64;           // files open at once: the main file and its includes
+};
+
 // Parses `file` (as the user named it; messages show it so) and everything it includes.
-void parse_file(const std::filesystem::path& file, Target& target);
+void parse_file(const std::filesystem::path& file, Target& target, const ParseOptions& options = {});
 
 // Parses text held in memory, as if it were the file `name` (its folder resolves Includes).
-void parse_string(std::string_view text, const std::filesystem::path& name, Target& target);
+void parse_string(std::string_view text, const std::filesystem::path& name, Target& target,
+                  const ParseOptions& options = {});
 
 }  // namespace candela::pbrt

@@ -1,0 +1,98 @@
+#include "candela/formats/pbrt/pbrt_token_stream.h"
+
+#include <cerrno>
+#include <cstring>
+#include <utility>
+
+namespace candela::pbrt {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path identity_of(const fs::path& path) {
+    std::error_code ec;
+    fs::path canonical = fs::weakly_canonical(path, ec);
+    if (ec) canonical = fs::absolute(path, ec).lexically_normal();
+    return canonical;
+}
+
+}  // namespace
+
+const Location* TokenStream::add_origin(std::string display_name, std::shared_ptr<const IncludeSite> from) {
+    auto origin = std::make_unique<Location>();
+    origin->file = std::move(display_name);
+    origin->included_from = std::move(from);
+    origins_.push_back(std::move(origin));
+    return origins_.back().get();
+}
+
+void TokenStream::open_main_file(const fs::path& name) {
+    const Location* origin = add_origin(name.generic_string(), nullptr);
+    std::error_code ec;
+    if (fs::is_directory(name, ec)) fail(*origin, "is a folder, not a pbrt-v4 scene file");
+    std::FILE* stream = std::fopen(name.c_str(), "rb");
+    if (!stream) {
+        const int error = errno;
+        fail(*origin, std::string("cannot open the scene: ") + std::strerror(error));
+    }
+    files_.push_back({std::make_unique<Tokenizer>(stream, origin, options_.chunk_size), origin, identity_of(name)});
+}
+
+void TokenStream::open_main_text(std::string_view text, const fs::path& name) {
+    const Location* origin = add_origin(name.generic_string(), nullptr);
+    files_.push_back({std::make_unique<Tokenizer>(text, origin, options_.chunk_size), origin, identity_of(name)});
+}
+
+void TokenStream::include(const std::string& name, const Token& directive) {
+    const Location at = directive.location();
+    if (name.empty()) fail(at, "an empty file name");
+    const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : fs::path(at.file).parent_path() / name;
+    const std::string display_name = path.lexically_normal().generic_string();
+    if (files_.size() >= size_t(options_.max_include_depth))
+        fail(at, "\"" + name + "\": includes nest deeper than " + std::to_string(options_.max_include_depth) +
+                     " files");
+    const fs::path identity = identity_of(path);
+    for (size_t i = 0; i < files_.size(); ++i) {
+        if (files_[i].identity != identity) continue;
+        std::string chain;
+        for (size_t j = i; j < files_.size(); ++j) chain += files_[j].origin->file + " -> ";
+        fail(at, "include cycle: " + chain + display_name);
+    }
+    // Only regular files: a device (/dev/stdin, /dev/zero) would block or never end.
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) fail(at, "\"" + display_name + "\" is a folder, not a file");
+    if (fs::exists(path, ec) && !fs::is_regular_file(path, ec))
+        fail(at, "\"" + display_name + "\" is not a regular file");
+    std::FILE* stream = std::fopen(path.c_str(), "rb");
+    if (!stream) {
+        const int error = errno;
+        fail(at, "cannot open \"" + display_name + "\": " + std::strerror(error));
+    }
+    const Location* origin = add_origin(display_name, std::make_shared<const IncludeSite>(IncludeSite{at}));
+    files_.push_back({std::make_unique<Tokenizer>(stream, origin, options_.chunk_size), origin, identity});
+}
+
+bool TokenStream::read(Token& out) {
+    while (!files_.empty()) {
+        if (files_.back().tokens->next(out)) return true;
+        files_.pop_back();
+    }
+    return false;
+}
+
+bool TokenStream::next(Token& out) {
+    if (has_lookahead_) {
+        std::swap(out, lookahead_);
+        has_lookahead_ = false;
+        return true;
+    }
+    return read(out);
+}
+
+const Token* TokenStream::peek() {
+    if (!has_lookahead_) has_lookahead_ = read(lookahead_);
+    return has_lookahead_ ? &lookahead_ : nullptr;
+}
+
+}  // namespace candela::pbrt

@@ -1,0 +1,168 @@
+#include "candela/formats/pbrt/pbrt_tokenizer.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+
+namespace candela::pbrt {
+
+namespace {
+
+constexpr bool is_space(int c) { return c == ' ' || c == '\n' || c == '\t' || c == '\r'; }
+
+// Bytes that end a bare word (pbrt-v4: white space, a quote, a bracket). '#' does not: "a#b" is
+// one word, as in pbrt-v4.
+constexpr bool ends_word(char c) {
+    return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '"' || c == '[' || c == ']';
+}
+
+}  // namespace
+
+Location Token::location() const {
+    Location at = *file;
+    at.line = line;
+    at.column = column;
+    return at;
+}
+
+Tokenizer::Tokenizer(std::FILE* stream, const Location* file, size_t chunk_size)
+    : stream_(stream), file_(file), buffer_(std::max<size_t>(chunk_size, 1)) {}
+
+Tokenizer::Tokenizer(std::string_view text, const Location* file, size_t chunk_size)
+    : text_(text), file_(file), buffer_(std::max<size_t>(chunk_size, 1)) {}
+
+Tokenizer::~Tokenizer() {
+    if (stream_) std::fclose(stream_);
+}
+
+bool Tokenizer::refill() {
+    offset_ += end_;
+    pos_ = end_ = 0;
+    if (stream_) {
+        end_ = std::fread(buffer_.data(), 1, buffer_.size(), stream_);
+        if (end_ == 0 && std::ferror(stream_)) {
+            const int error = errno;
+            fail_at(line_, column_at_pos(), std::string("cannot read the file: ") + std::strerror(error));
+        }
+    } else {
+        end_ = std::min(text_.size(), buffer_.size());
+        std::copy_n(text_.data(), end_, buffer_.data());
+        text_.remove_prefix(end_);
+    }
+    return end_ > 0;
+}
+
+void Tokenizer::fail_at(int line, int column, const std::string& message) const {
+    Location at = *file_;
+    at.line = line;
+    at.column = column;
+    fail(at, message);
+}
+
+bool Tokenizer::next(Token& out) {
+    for (;;) {
+        const int c = peek();
+        if (c < 0) return false;
+        if (c == '\n') {
+            ++pos_;
+            ++line_;
+            line_start_ = offset_ + pos_;
+        } else if (is_space(c)) {
+            ++pos_;
+        } else if (c == '#') {
+            skip_comment();
+        } else {
+            out.file = file_;
+            out.line = line_;
+            out.column = column_at_pos();
+            out.text.clear();
+            if (c == '[' || c == ']') {
+                out.kind = c == '[' ? Token::Kind::Open : Token::Kind::Close;
+                out.text.push_back(char(c));
+                ++pos_;
+            } else if (c == '"') {
+                out.kind = Token::Kind::String;
+                ++pos_;
+                read_string(out);
+            } else {
+                out.kind = Token::Kind::Word;
+                read_word(out);
+            }
+            return true;
+        }
+    }
+}
+
+void Tokenizer::skip_comment() {
+    // The line break stays, so that next() counts the line.
+    for (;;) {
+        const char* begin = buffer_.data() + pos_;
+        const void* eol = std::memchr(begin, '\n', end_ - pos_);
+        if (eol) {
+            pos_ += size_t(static_cast<const char*>(eol) - begin);
+            return;
+        }
+        pos_ = end_;
+        if (!refill()) return;
+    }
+}
+
+void Tokenizer::append(Token& out, size_t from) {
+    if (out.text.size() + (pos_ - from) > kMaxTokenBytes)
+        fail_at(out.line, out.column, "a token longer than " + std::to_string(kMaxTokenBytes >> 20) + " MiB");
+    out.text.append(buffer_.data() + from, pos_ - from);
+}
+
+void Tokenizer::read_word(Token& out) {
+    for (;;) {
+        const size_t from = pos_;
+        while (pos_ < end_ && !ends_word(buffer_[pos_])) ++pos_;
+        append(out, from);
+        if (pos_ < end_ || !refill()) return;
+    }
+}
+
+void Tokenizer::read_string(Token& out) {
+    for (;;) {
+        const size_t from = pos_;
+        while (pos_ < end_) {
+            const char c = buffer_[pos_];
+            if (c == '"' || c == '\\' || c == '\n') break;
+            ++pos_;
+        }
+        append(out, from);
+        const int c = peek();
+        if (c < 0) fail_at(out.line, out.column, "unterminated string (the file ends inside it)");
+        if (c == '\n') fail_at(out.line, out.column, "unterminated string (a line break inside it)");
+        if (c == '"') {
+            ++pos_;
+            return;
+        }
+        if (c == '\\') {
+            const int escape_column = column_at_pos();
+            ++pos_;
+            const int e = peek();
+            char decoded = 0;
+            switch (e) {
+                case 'b': decoded = '\b'; break;
+                case 'f': decoded = '\f'; break;
+                case 'n': decoded = '\n'; break;
+                case 'r': decoded = '\r'; break;
+                case 't': decoded = '\t'; break;
+                case '\\': decoded = '\\'; break;
+                case '\'': decoded = '\''; break;
+                case '"': decoded = '"'; break;
+                case -1: fail_at(out.line, out.column, "unterminated string (the file ends inside it)");
+                default:
+                    fail_at(line_, escape_column,
+                            std::string("unknown escape \\") + char(e) + " in a string (pbrt-v4 knows \\b \\f \\n \\r \\t \\\\ \\' \\\")");
+            }
+            ++pos_;
+            if (out.text.size() >= kMaxTokenBytes)
+                fail_at(out.line, out.column, "a token longer than " + std::to_string(kMaxTokenBytes >> 20) + " MiB");
+            out.text.push_back(decoded);
+        }
+    }
+}
+
+}  // namespace candela::pbrt

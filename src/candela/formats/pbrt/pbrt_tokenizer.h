@@ -1,0 +1,67 @@
+#pragma once
+// The tokens of one pbrt-v4 scene file (pbrt-v4's src/pbrt/parser.cpp, Tokenizer): quoted strings
+// (escapes \b \f \n \r \t \\ \' \"; a line break or the end of the file inside one is an error),
+// '[' and ']', and bare words (directives, numbers, true/false), separated by white space; '#'
+// starts a comment that runs to the end of the line. The file is read in fixed-size chunks, so
+// memory stays bounded however large the file; a token may straddle two chunks.
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "candela/formats/pbrt/pbrt_location.h"
+
+namespace candela::pbrt {
+
+struct Token {
+    enum class Kind { Word, String, Open, Close };
+    Kind kind = Kind::Word;
+    std::string text;                // a string's text without quotes, escapes decoded
+    const Location* file = nullptr;  // the file (line and column 0) and its include chain
+    int line = 0;
+    int column = 0;
+    Location location() const;
+};
+
+// The longest token accepted: a bound on memory, since a token is held whole.
+inline constexpr size_t kMaxTokenBytes = size_t(64) << 20;
+
+class Tokenizer {
+  public:
+    // Reads the open file `stream` (closed by the tokenizer) in chunks of `chunk_size` bytes.
+    // `file` names it in locations; it must outlive the tokens.
+    Tokenizer(std::FILE* stream, const Location* file, size_t chunk_size);
+    // Reads text held in memory, in the same chunks (so tests can make tokens straddle them).
+    Tokenizer(std::string_view text, const Location* file, size_t chunk_size);
+    ~Tokenizer();
+    Tokenizer(const Tokenizer&) = delete;
+    Tokenizer& operator=(const Tokenizer&) = delete;
+
+    // The next token into `out` (its string keeps its capacity); false at the end of the file.
+    bool next(Token& out);
+
+  private:
+    bool refill();  // discards the buffer, reads the next chunk; false at the end of the input
+    // The byte at the read position, refilling as needed; -1 at the end of the input.
+    int peek() { return pos_ < end_ || refill() ? static_cast<unsigned char>(buffer_[pos_]) : -1; }
+    void skip_comment();
+    void read_word(Token& out);
+    void read_string(Token& out);
+    void append(Token& out, size_t from);
+    [[noreturn]] void fail_at(int line, int column, const std::string& message) const;
+    int column_at_pos() const { return int(offset_ + pos_ - line_start_) + 1; }
+
+    std::FILE* stream_ = nullptr;
+    std::string_view text_;  // the rest of the in-memory text
+    const Location* file_;
+    std::vector<char> buffer_;
+    size_t pos_ = 0;         // read position in buffer_
+    size_t end_ = 0;         // bytes held in buffer_
+    uint64_t offset_ = 0;    // the file offset of buffer_[0]
+    int line_ = 1;
+    uint64_t line_start_ = 0;  // the file offset of the current line's first byte
+};
+
+}  // namespace candela::pbrt

@@ -1,0 +1,109 @@
+// Include and Import: paths relative to the including file, locations carrying the chain of
+// includes, cycles, missing files and the nesting limit (fixtures in tests/data/pbrt/; the tests
+// run in tests/, so the scenes are named data/pbrt/...).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "candela/core/error.h"
+#include "candela/formats/pbrt/pbrt_parser.h"
+#include "recording_target.h"
+
+namespace candela::pbrt {
+namespace {
+
+using test::RecordingTarget;
+
+std::string error_of_file(const std::string& file, const ParseOptions& options = {}) {
+    RecordingTarget target;
+    try {
+        parse_file(file, target, options);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "expected a SceneError for " << file;
+    return "";
+}
+
+TEST(PbrtInclude, PathsAreRelativeToTheIncludingFileAndLocationsNameTheChain) {
+    RecordingTarget t;
+    parse_file("data/pbrt/include_main.pbrt", t);
+    EXPECT_EQ(t.log, std::vector<std::string>({"Camera perspective @2:1", "WorldBegin @3:1",
+                                               "Shape trianglemesh @2:1", "Shape disk {float radius: 2} @1:1",
+                                               "LightSource point @2:1", "Shape sphere @6:1"}));
+    ASSERT_EQ(t.locations.size(), 6u);
+    EXPECT_EQ(describe(t.locations[0]), "data/pbrt/include_main.pbrt:2:1");
+    EXPECT_EQ(describe(t.locations[2]),
+              "data/pbrt/geometry/shapes.pbrt:2:1 (included from data/pbrt/include_main.pbrt:4:3)");
+    EXPECT_EQ(describe(t.locations[3]),
+              "data/pbrt/geometry/nested/leaf.pbrt:1:1 (included from data/pbrt/geometry/shapes.pbrt:3:5) "
+              "(included from data/pbrt/include_main.pbrt:4:3)");
+    EXPECT_EQ(describe(t.parameter_lists[3][0].location),
+              "data/pbrt/geometry/nested/leaf.pbrt:1:14 (included from data/pbrt/geometry/shapes.pbrt:3:5) "
+              "(included from data/pbrt/include_main.pbrt:4:3)");
+    // Import reads as Include.
+    EXPECT_EQ(describe(t.locations[4]),
+              "data/pbrt/geometry/imported.pbrt:2:1 (included from data/pbrt/include_main.pbrt:5:1)");
+    EXPECT_EQ(describe(t.locations[5]), "data/pbrt/include_main.pbrt:6:1");
+    EXPECT_EQ(t.locations[5].included_from, nullptr);
+}
+
+TEST(PbrtInclude, ErrorsInAnIncludedFileNameTheChain) {
+    EXPECT_EQ(error_of_file("data/pbrt/include_error_main.pbrt"),
+              "data/pbrt/geometry/bad_leaf.pbrt:2:39: \"float radius\": expected a number, got \"oops\" "
+              "(included from data/pbrt/include_error_main.pbrt:3:1)");
+}
+
+TEST(PbrtInclude, ACycleIsAnErrorNamingIt) {
+    EXPECT_EQ(error_of_file("data/pbrt/cycle_a.pbrt"),
+              "data/pbrt/cycle_b.pbrt:2:1: include cycle: data/pbrt/cycle_a.pbrt -> data/pbrt/cycle_b.pbrt -> "
+              "data/pbrt/cycle_a.pbrt (included from data/pbrt/cycle_a.pbrt:2:1)");
+}
+
+TEST(PbrtInclude, AMissingFileIsAnErrorAtTheInclude) {
+    EXPECT_EQ(error_of_file("data/pbrt/include_missing.pbrt"),
+              "data/pbrt/include_missing.pbrt:2:1: cannot open \"data/pbrt/geometry/absent.pbrt\": No such file or "
+              "directory");
+    EXPECT_EQ(error_of_file("data/pbrt/absent.pbrt"),
+              "data/pbrt/absent.pbrt: cannot open the scene: No such file or directory");
+    EXPECT_EQ(error_of_file("data/pbrt"), "data/pbrt: is a folder, not a pbrt-v4 scene file");
+}
+
+TEST(PbrtInclude, FoldersAndDevicesAreNotIncluded) {
+    RecordingTarget t;
+    try {
+        parse_string("Include \"geometry\"", "data/pbrt/virtual.pbrt", t);
+        ADD_FAILURE();
+    } catch (const SceneError& e) {
+        EXPECT_STREQ(e.what(), "data/pbrt/virtual.pbrt:1:1: \"data/pbrt/geometry\" is a folder, not a file");
+    }
+    try {
+        parse_string("Include \"/dev/zero\"", "s.pbrt", t);
+        ADD_FAILURE();
+    } catch (const SceneError& e) {
+        EXPECT_STREQ(e.what(), "s.pbrt:1:1: \"/dev/zero\" is not a regular file");
+    }
+}
+
+TEST(PbrtInclude, TextInMemoryIncludesRelativeToItsName) {
+    RecordingTarget t;
+    parse_string("Include \"geometry/nested/leaf.pbrt\"", "data/pbrt/virtual.pbrt", t);
+    ASSERT_EQ(t.locations.size(), 1u);
+    EXPECT_EQ(describe(t.locations[0]),
+              "data/pbrt/geometry/nested/leaf.pbrt:1:1 (included from data/pbrt/virtual.pbrt:1:1)");
+}
+
+TEST(PbrtInclude, NestingIsLimited) {
+    RecordingTarget t;
+    parse_file("data/pbrt/chain/1.pbrt", t);
+    EXPECT_EQ(t.log, std::vector<std::string>({"Shape sphere @1:1"}));
+    ParseOptions options;
+    options.max_include_depth = 3;
+    EXPECT_EQ(error_of_file("data/pbrt/chain/1.pbrt", options),
+              "data/pbrt/chain/3.pbrt:1:1: \"4.pbrt\": includes nest deeper than 3 files (included from "
+              "data/pbrt/chain/2.pbrt:1:1) (included from data/pbrt/chain/1.pbrt:1:1)");
+}
+
+}  // namespace
+}  // namespace candela::pbrt
