@@ -39,6 +39,15 @@ const TypeInfo* find_type(std::string_view name) {
     return nullptr;
 }
 
+// Directives start with a capital letter; numbers never do, so a list of numbers skips the lookup.
+bool might_be_directive(std::string_view word) { return !word.empty() && word[0] >= 'A' && word[0] <= 'Z'; }
+
+// First the first byte: in a list of numbers almost every word fails there.
+bool is_bool_word(const Token& t) {
+    return t.kind == Token::Kind::Word && !t.text.empty() && (t.text[0] == 't' || t.text[0] == 'f') &&
+           (t.text == "true" || t.text == "false");
+}
+
 std::string quote_text(std::string_view s) { return "\"" + std::string(s) + "\""; }
 
 std::string describe_token(const Token& t) {
@@ -96,10 +105,10 @@ class ValueReader {
 
     void add(const Token& v) {
         if (values_ == Values::Inferred) values_ = infer(v);
-        const bool is_bool_word = v.kind == Token::Kind::Word && (v.text == "true" || v.text == "false");
+        const bool bool_word = is_bool_word(v);
         switch (values_) {
             case Values::Bools:
-                if (is_bool_word || (v.kind == Token::Kind::String && (v.text == "true" || v.text == "false"))) {
+                if (bool_word || (v.kind == Token::Kind::String && (v.text == "true" || v.text == "false"))) {
                     p_.bools.push_back(v.text == "true");
                     return;
                 }
@@ -124,7 +133,7 @@ class ValueReader {
                 add_number(v);
                 return;
             case Values::Integers:
-                if (v.kind == Token::Kind::Word && !is_bool_word && !is_int32(v.text)) {
+                if (v.kind == Token::Kind::Word && !bool_word && !is_int32(v.text)) {
                     parse_number(v, context_);  // a word that is no number gets that message
                     fail(v.location(), context_ + ": expected a 32-bit integer, got " + describe_token(v));
                 }
@@ -138,11 +147,11 @@ class ValueReader {
   private:
     static Values infer(const Token& v) {
         if (v.kind == Token::Kind::String) return Values::Strings;
-        if (v.text == "true" || v.text == "false") return Values::Bools;
+        if (is_bool_word(v)) return Values::Bools;
         return Values::Numbers;
     }
     void add_number(const Token& v) {
-        if (v.kind != Token::Kind::Word || v.text == "true" || v.text == "false")
+        if (v.kind != Token::Kind::Word || is_bool_word(v))
             fail(v.location(), context_ + ": expected a number, got " + describe_token(v));
         p_.numbers.push_back(parse_number(v, context_));
     }
@@ -198,7 +207,7 @@ Parameter read_parameter(TokenStream& tokens, const Token& declaration, bool unt
             if (!tokens.next(value)) fail(first, context + ": missing ] (the list runs to the end of the file)");
             if (value.kind == Token::Kind::Close) break;
             if (value.kind == Token::Kind::Open) fail(value.location(), context + ": unexpected [ inside a list");
-            if (value.kind == Token::Kind::Word && find_directive(value.text))
+            if (value.kind == Token::Kind::Word && might_be_directive(value.text) && find_directive(value.text))
                 fail(first, context + ": missing ] (the list runs into " + value.text + " at " +
                                 std::to_string(value.line) + ":" + std::to_string(value.column) + ")");
             reader.add(value);

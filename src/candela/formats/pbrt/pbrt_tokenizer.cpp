@@ -1,6 +1,7 @@
 #include "candela/formats/pbrt/pbrt_tokenizer.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstring>
 
@@ -12,9 +13,12 @@ constexpr bool is_space(int c) { return c == ' ' || c == '\n' || c == '\t' || c 
 
 // Bytes that end a bare word (pbrt-v4: white space, a quote, a bracket). '#' does not: "a#b" is
 // one word, as in pbrt-v4.
-constexpr bool ends_word(char c) {
-    return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '"' || c == '[' || c == ']';
-}
+constexpr std::array<bool, 256> kEndsWord = [] {
+    std::array<bool, 256> table{};
+    for (const unsigned char c : {' ', '\n', '\t', '\r', '"', '[', ']'}) table[c] = true;
+    return table;
+}();
+inline bool ends_word(char c) { return kEndsWord[static_cast<unsigned char>(c)]; }
 
 }  // namespace
 
