@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets (scripts/build-sanitize.sh) and fuzzes each for a while:
 #   scripts/fuzz.sh [--smoke SECONDS | --long SECONDS] [TARGET...]
 # --smoke (default, 30 s per target) is what CI runs; --long is for the recorded runs in
-# docs/RELIABILITY.md. Targets: scene obj ply hdr exr (default: all). Each target first runs
+# docs/RELIABILITY.md. Targets: scene obj ply hdr exr pbrt (default: all). Each target first runs
 # every input in fuzz/regressions/TARGET/ (inputs that once crashed it), then fuzzes from its
 # seeds (the repository's scenes, meshes, images and bad inputs) and its working corpus, which
 # grows in BUILD_DIR/fuzz-corpus/TARGET/ from run to run. A crash, a hang (an input taking over
@@ -22,7 +22,7 @@ while [ $# -gt 0 ]; do
     *) targets+=("$1"); shift ;;
   esac
 done
-all_targets=(scene obj ply hdr exr)
+all_targets=(scene obj ply hdr exr pbrt)
 [ ${#targets[@]} -eq 0 ] && targets=("${all_targets[@]}")
 for t in "${targets[@]}"; do
   [[ " ${all_targets[*]} " == *" $t "* ]] || { echo "fuzz: unknown target $t; expected one of: ${all_targets[*]}" >&2; exit 2; }
@@ -44,6 +44,7 @@ seed_files() {
     ply) patterns=(-iname '*.ply') ;;
     hdr) patterns=(-iname '*.hdr') ;;
     exr) patterns=(-iname '*.exr') ;;
+    pbrt) patterns=(-iname '*.pbrt') ;;
   esac
   find scenes tests/data -type f \( "${patterns[@]}" \) -size -65k | sort
 }

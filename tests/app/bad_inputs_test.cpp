@@ -625,6 +625,10 @@ TEST(BadInputs, EveryFileHasAnExpectation) {
             if (entry.is_directory()) continue;  // scene_is_folder.json
             std::ifstream in(entry.path(), std::ios::binary);
             all_scene_text.append(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        } else if (entry.path().extension() == ".pbrt") {
+            // pbrt-v4 scenes (issue 15): tests/formats/pbrt checks the parser's message for each;
+            // they join the table when `candela render` opens .pbrt files.
+            continue;
         } else if (name != "README.md" && name != "make_bad_inputs.py") {
             others.push_back(name);
         }

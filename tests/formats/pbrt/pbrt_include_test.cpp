@@ -105,5 +105,29 @@ TEST(PbrtInclude, NestingIsLimited) {
               "data/pbrt/chain/2.pbrt:1:1) (included from data/pbrt/chain/1.pbrt:1:1)");
 }
 
+// The pbrt-v4 cases of the bad-input corpus give these messages from the parser (the CLI's
+// checks of them live with the other bad inputs in tests/app/bad_inputs_test.cpp).
+TEST(PbrtInclude, BadInputCorpusMessages) {
+    const std::string dir = "data/bad_inputs/";
+    const std::pair<const char*, const char*> cases[] = {
+        {"pbrt_unterminated_string.pbrt", "pbrt_unterminated_string.pbrt:8:7: unterminated string (a line break inside it)"},
+        {"pbrt_unknown_directive.pbrt", "pbrt_unknown_directive.pbrt:8:1: unknown directive \"AttributeBeginn\""},
+        {"pbrt_wrong_parameter_type.pbrt",
+         "pbrt_wrong_parameter_type.pbrt:7:31: \"float radius\": expected a number, got the string \"one\""},
+        {"pbrt_missing_include.pbrt",
+         "pbrt_missing_include.pbrt:7:1: cannot open \"data/bad_inputs/pbrt_missing_include_geometry.pbrt\": No such "
+         "file or directory"},
+        {"pbrt_include_cycle.pbrt",
+         "pbrt_include_cycle.pbrt:8:1: include cycle: data/bad_inputs/pbrt_include_cycle.pbrt -> "
+         "data/bad_inputs/pbrt_include_cycle.pbrt"},
+        {"pbrt_number_overflow.pbrt",
+         "pbrt_number_overflow.pbrt:7:31: \"float radius\": \"1e999\" is beyond the range of a double"},
+        {"pbrt_malformed_parameter.pbrt",
+         "pbrt_malformed_parameter.pbrt:7:16: parameter \"radius\" has no type (expected \"type name\", e.g. \"float "
+         "radius\")"},
+    };
+    for (const auto& [file, message] : cases) EXPECT_EQ(error_of_file(dir + file), dir + message);
+}
+
 }  // namespace
 }  // namespace candela::pbrt
