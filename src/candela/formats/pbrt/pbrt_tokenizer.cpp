@@ -4,6 +4,7 @@
 #include <array>
 #include <cerrno>
 #include <cstring>
+#include <limits>
 
 namespace candela::pbrt {
 
@@ -69,7 +70,7 @@ bool Tokenizer::next(Token& out) {
         if (c < 0) return false;
         if (c == '\n') {
             ++pos_;
-            ++line_;
+            if (line_ < std::numeric_limits<int>::max()) ++line_;
             line_start_ = offset_ + pos_;
         } else if (is_space(c)) {
             ++pos_;

@@ -4,8 +4,10 @@
 // '[' and ']', and bare words (directives, numbers, true/false), separated by white space; '#'
 // starts a comment that runs to the end of the line. The file is read in fixed-size chunks, so
 // memory stays bounded however large the file; a token may straddle two chunks.
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -51,7 +53,10 @@ class Tokenizer {
     void read_string(Token& out);
     void append(Token& out, size_t from);
     [[noreturn]] void fail_at(int line, int column, const std::string& message) const;
-    int column_at_pos() const { return int(offset_ + pos_ - line_start_) + 1; }
+    // Saturated: a line over 2 GiB long (or a file of over 2^31 lines) gives wrong numbers, not UB.
+    int column_at_pos() const {
+        return int(std::min<uint64_t>(offset_ + pos_ - line_start_, uint64_t(std::numeric_limits<int>::max() - 1))) + 1;
+    }
 
     std::FILE* stream_ = nullptr;
     std::string_view text_;  // the rest of the in-memory text
