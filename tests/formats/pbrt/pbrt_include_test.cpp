@@ -49,6 +49,18 @@ TEST(PbrtInclude, PathsAreRelativeToTheIncludingFileAndLocationsNameTheChain) {
     EXPECT_EQ(t.locations[5].included_from, nullptr);
 }
 
+TEST(PbrtInclude, ChunkSizeChangesNothingAcrossFiles) {
+    RecordingTarget whole;
+    parse_file("data/pbrt/include_main.pbrt", whole);
+    for (size_t chunk : {1, 2, 7}) {
+        ParseOptions options;
+        options.chunk_size = chunk;
+        RecordingTarget t;
+        parse_file("data/pbrt/include_main.pbrt", t, options);
+        EXPECT_EQ(t.log, whole.log) << chunk;
+    }
+}
+
 TEST(PbrtInclude, ErrorsInAnIncludedFileNameTheChain) {
     EXPECT_EQ(error_of_file("data/pbrt/include_error_main.pbrt"),
               "data/pbrt/geometry/bad_leaf.pbrt:2:39: \"float radius\": expected a number, got \"oops\" "

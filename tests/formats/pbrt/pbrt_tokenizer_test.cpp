@@ -11,10 +11,10 @@ namespace candela::pbrt {
 namespace {
 
 // Every token of `text` as "kind:text@line:col", read in chunks of `chunk` bytes.
-std::vector<std::string> tokens(const std::string& text, size_t chunk = 1 << 20) {
+std::vector<std::string> tokens(const std::string& text, size_t chunk = 1 << 20, size_t max_token = 1 << 20) {
     Location file;
     file.file = "t.pbrt";
-    Tokenizer tokenizer(text, &file, chunk);
+    Tokenizer tokenizer(text, &file, chunk, max_token);
     std::vector<std::string> out;
     Token t;
     while (tokenizer.next(t)) {
@@ -28,9 +28,9 @@ std::vector<std::string> tokens(const std::string& text, size_t chunk = 1 << 20)
     return out;
 }
 
-std::string error_of(const std::string& text, size_t chunk = 1 << 20) {
+std::string error_of(const std::string& text, size_t chunk = 1 << 20, size_t max_token = 1 << 20) {
     try {
-        tokens(text, chunk);
+        tokens(text, chunk, max_token);
     } catch (const SceneError& e) {
         return e.what();
     }
@@ -84,6 +84,14 @@ TEST(PbrtTokenizer, TokensStraddlingChunksAreWhole) {
     for (size_t chunk = 1; chunk <= text.size() + 1; ++chunk) EXPECT_EQ(tokens(text, chunk), whole) << chunk;
     for (size_t chunk = 1; chunk <= 12; ++chunk)
         EXPECT_EQ(error_of("A B\n  \"no end", chunk), "t.pbrt:2:3: unterminated string (the file ends inside it)");
+}
+
+// A token is held whole, so its length is bounded: words, strings and escapes count.
+TEST(PbrtTokenizer, TokensLongerThanTheLimitAreErrors) {
+    EXPECT_EQ(tokens("abcdefgh \"12345678\" \"\\n\\n\"", 3, 8).size(), 3u);
+    EXPECT_EQ(error_of("x\n abcdefghi", 3, 8), "t.pbrt:2:2: a token longer than 8 bytes");
+    EXPECT_EQ(error_of("\"123456789\"", 3, 8), "t.pbrt:1:1: a token longer than 8 bytes");
+    EXPECT_EQ(error_of("\"12345678\\n\"", 3, 8), "t.pbrt:1:1: a token longer than 8 bytes");
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ namespace candela::pbrt {
 struct ParseOptions {
     size_t chunk_size = size_t(1) << 20;  // bytes read at a time from each open file
     int max_include_depth = 64;           // files open at once: the main file and its includes
+    size_t max_token_bytes = size_t(64) << 20;  // a longer word or string is an error (memory bound)
 };
 
 // Parses `file` (as the user named it; messages show it so) and everything it includes.

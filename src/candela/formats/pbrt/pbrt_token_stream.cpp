@@ -36,12 +36,12 @@ void TokenStream::open_main_file(const fs::path& name) {
         const int error = errno;
         fail(*origin, std::string("cannot open the scene: ") + std::strerror(error));
     }
-    files_.push_back({std::make_unique<Tokenizer>(stream, origin, options_.chunk_size), origin, identity_of(name)});
+    files_.push_back({std::make_unique<Tokenizer>(stream, origin, options_.chunk_size, options_.max_token_bytes), origin, identity_of(name)});
 }
 
 void TokenStream::open_main_text(std::string_view text, const fs::path& name) {
     const Location* origin = add_origin(name.generic_string(), nullptr);
-    files_.push_back({std::make_unique<Tokenizer>(text, origin, options_.chunk_size), origin, identity_of(name)});
+    files_.push_back({std::make_unique<Tokenizer>(text, origin, options_.chunk_size, options_.max_token_bytes), origin, identity_of(name)});
 }
 
 void TokenStream::include(const std::string& name, const Token& directive) {
@@ -70,7 +70,7 @@ void TokenStream::include(const std::string& name, const Token& directive) {
         fail(at, "cannot open \"" + display_name + "\": " + std::strerror(error));
     }
     const Location* origin = add_origin(display_name, std::make_shared<const IncludeSite>(IncludeSite{at}));
-    files_.push_back({std::make_unique<Tokenizer>(stream, origin, options_.chunk_size), origin, identity});
+    files_.push_back({std::make_unique<Tokenizer>(stream, origin, options_.chunk_size, options_.max_token_bytes), origin, identity});
 }
 
 bool TokenStream::read(Token& out) {

@@ -30,11 +30,11 @@ Location Token::location() const {
     return at;
 }
 
-Tokenizer::Tokenizer(std::FILE* stream, const Location* file, size_t chunk_size)
-    : stream_(stream), file_(file), buffer_(std::max<size_t>(chunk_size, 1)) {}
+Tokenizer::Tokenizer(std::FILE* stream, const Location* file, size_t chunk_size, size_t max_token_bytes)
+    : stream_(stream), file_(file), max_token_bytes_(max_token_bytes), buffer_(std::max<size_t>(chunk_size, 1)) {}
 
-Tokenizer::Tokenizer(std::string_view text, const Location* file, size_t chunk_size)
-    : text_(text), file_(file), buffer_(std::max<size_t>(chunk_size, 1)) {}
+Tokenizer::Tokenizer(std::string_view text, const Location* file, size_t chunk_size, size_t max_token_bytes)
+    : text_(text), file_(file), max_token_bytes_(max_token_bytes), buffer_(std::max<size_t>(chunk_size, 1)) {}
 
 Tokenizer::~Tokenizer() {
     if (stream_) std::fclose(stream_);
@@ -112,9 +112,13 @@ void Tokenizer::skip_comment() {
     }
 }
 
+void Tokenizer::check_length(const Token& out, size_t more) const {
+    if (out.text.size() + more > max_token_bytes_)
+        fail_at(out.line, out.column, "a token longer than " + std::to_string(max_token_bytes_) + " bytes");
+}
+
 void Tokenizer::append(Token& out, size_t from) {
-    if (out.text.size() + (pos_ - from) > kMaxTokenBytes)
-        fail_at(out.line, out.column, "a token longer than " + std::to_string(kMaxTokenBytes >> 20) + " MiB");
+    check_length(out, pos_ - from);
     out.text.append(buffer_.data() + from, pos_ - from);
 }
 
@@ -163,8 +167,7 @@ void Tokenizer::read_string(Token& out) {
                             std::string("unknown escape \\") + char(e) + " in a string (pbrt-v4 knows \\b \\f \\n \\r \\t \\\\ \\' \\\")");
             }
             ++pos_;
-            if (out.text.size() >= kMaxTokenBytes)
-                fail_at(out.line, out.column, "a token longer than " + std::to_string(kMaxTokenBytes >> 20) + " MiB");
+            check_length(out, 1);
             out.text.push_back(decoded);
         }
     }

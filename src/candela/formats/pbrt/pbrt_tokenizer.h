@@ -27,16 +27,14 @@ struct Token {
     Location location() const;
 };
 
-// The longest token accepted: a bound on memory, since a token is held whole.
-inline constexpr size_t kMaxTokenBytes = size_t(64) << 20;
-
 class Tokenizer {
   public:
     // Reads the open file `stream` (closed by the tokenizer) in chunks of `chunk_size` bytes.
-    // `file` names it in locations; it must outlive the tokens.
-    Tokenizer(std::FILE* stream, const Location* file, size_t chunk_size);
+    // `file` names it in locations; it must outlive the tokens. A token longer than
+    // `max_token_bytes` is an error: a bound on memory, since a token is held whole.
+    Tokenizer(std::FILE* stream, const Location* file, size_t chunk_size, size_t max_token_bytes);
     // Reads text held in memory, in the same chunks (so tests can make tokens straddle them).
-    Tokenizer(std::string_view text, const Location* file, size_t chunk_size);
+    Tokenizer(std::string_view text, const Location* file, size_t chunk_size, size_t max_token_bytes);
     ~Tokenizer();
     Tokenizer(const Tokenizer&) = delete;
     Tokenizer& operator=(const Tokenizer&) = delete;
@@ -52,6 +50,7 @@ class Tokenizer {
     void read_word(Token& out);
     void read_string(Token& out);
     void append(Token& out, size_t from);
+    void check_length(const Token& out, size_t more) const;
     [[noreturn]] void fail_at(int line, int column, const std::string& message) const;
     // Saturated: a line over 2 GiB long (or a file of over 2^31 lines) gives wrong numbers, not UB.
     int column_at_pos() const {
@@ -61,6 +60,7 @@ class Tokenizer {
     std::FILE* stream_ = nullptr;
     std::string_view text_;  // the rest of the in-memory text
     const Location* file_;
+    size_t max_token_bytes_;
     std::vector<char> buffer_;
     size_t pos_ = 0;         // read position in buffer_
     size_t end_ = 0;         // bytes held in buffer_
