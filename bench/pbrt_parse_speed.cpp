@@ -4,8 +4,9 @@
 // printed as exporters print them, 6 significant digits) followed by many small directives
 // (AttributeBegin, Translate, Material, a sphere, AttributeEnd); then parses it with a target
 // that only counts, on one thread, and prints MB/s (10^6 bytes of text per second, by wall
-// clock and by the process's CPU time) and the process's peak RSS. --file parses an existing scene instead. The file was just written, so it
-// is read from the page cache: this measures the parser, not the disk.
+// clock and by the process's CPU time) and the process's peak RSS. --file parses an existing
+// scene instead. The file was just written, so it is read from the page cache: this measures the
+// parser, not the disk. On a shared machine the CPU figure is the parser's speed on one core.
 #include <fmt/format.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -68,7 +69,8 @@ void write_scene(const fs::path& path, double megabytes) {
         fmt::format_to(std::back_inserter(out), " ]\n    \"normal N\" [");
         for (int i = 0; i < 3 * kVertices; ++i) fmt::format_to(std::back_inserter(out), " {:.6g}", v.next());
         fmt::format_to(std::back_inserter(out), " ]\n    \"point2 uv\" [");
-        for (int i = 0; i < 2 * kVertices; ++i) fmt::format_to(std::back_inserter(out), " {:.6g}", 0.5 + 0.5 * v.next());
+        for (int i = 0; i < 2 * kVertices; ++i)
+            fmt::format_to(std::back_inserter(out), " {:.6g}", 0.5 + 0.5 * v.next());
         fmt::format_to(std::back_inserter(out), " ]\n    \"integer indices\" [");
         for (int i = 0; i < 3 * kTriangles; ++i)
             fmt::format_to(std::back_inserter(out), " {}", int((0.5 + 0.5 * v.next()) * (kVertices - 1)));
@@ -137,10 +139,11 @@ int main(int argc, char** argv) {
         candela::pbrt::parse_file(file, target);
         const double cpu = cpu_seconds() - cpu0;
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        fmt::print("parsed {:.1f} MB in {:.3f} s wall, {:.3f} s CPU: {:.1f} MB/s wall, {:.1f} MB/s CPU; {} parameters, "
-                   "{} numbers; peak RSS {} MiB\n",
-                   bytes / 1e6, seconds, cpu, bytes / 1e6 / seconds, bytes / 1e6 / cpu, target.parameters_seen,
-                   target.numbers, peak_rss_mib());
+        fmt::print(
+            "parsed {:.1f} MB in {:.3f} s wall, {:.3f} s CPU: {:.1f} MB/s wall, {:.1f} MB/s CPU; {} parameters, "
+            "{} numbers; peak RSS {} MiB\n",
+            bytes / 1e6, seconds, cpu, bytes / 1e6 / seconds, bytes / 1e6 / cpu, target.parameters_seen, target.numbers,
+            peak_rss_mib());
         if (generated && !keep) fs::remove(file);
     } catch (const candela::SceneError& e) {
         std::fprintf(stderr, "%s\n", e.what());

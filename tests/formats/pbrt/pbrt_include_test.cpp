@@ -29,9 +29,9 @@ std::string error_of_file(const std::string& file, const ParseOptions& options =
 TEST(PbrtInclude, PathsAreRelativeToTheIncludingFileAndLocationsNameTheChain) {
     RecordingTarget t;
     parse_file("data/pbrt/include_main.pbrt", t);
-    EXPECT_EQ(t.log, std::vector<std::string>({"Camera perspective @2:1", "WorldBegin @3:1",
-                                               "Shape trianglemesh @2:1", "Shape disk {float radius: 2} @1:1",
-                                               "LightSource point @2:1", "Shape sphere @6:1"}));
+    EXPECT_EQ(t.log, std::vector<std::string>({"Camera perspective @2:1", "WorldBegin @3:1", "Shape trianglemesh @2:1",
+                                               "Shape disk {float radius: 2} @1:1", "LightSource point @2:1",
+                                               "Shape sphere @6:1"}));
     ASSERT_EQ(t.locations.size(), 6u);
     EXPECT_EQ(describe(t.locations[0]), "data/pbrt/include_main.pbrt:2:1");
     EXPECT_EQ(describe(t.locations[2]),
@@ -122,7 +122,8 @@ TEST(PbrtInclude, NestingIsLimited) {
 TEST(PbrtInclude, BadInputCorpusMessages) {
     const std::string dir = "data/bad_inputs/";
     const std::pair<const char*, const char*> cases[] = {
-        {"pbrt_unterminated_string.pbrt", "pbrt_unterminated_string.pbrt:8:7: unterminated string (a line break inside it)"},
+        {"pbrt_unterminated_string.pbrt",
+         "pbrt_unterminated_string.pbrt:8:7: unterminated string (a line break inside it)"},
         {"pbrt_unknown_directive.pbrt", "pbrt_unknown_directive.pbrt:8:1: unknown directive \"AttributeBeginn\""},
         {"pbrt_wrong_parameter_type.pbrt",
          "pbrt_wrong_parameter_type.pbrt:7:31: \"float radius\": expected a number, got the string \"one\""},

@@ -151,16 +151,18 @@ TEST(PbrtParser, BareValuesAreOneValueLists) {
 }
 
 TEST(PbrtParser, OptionsTakeTheirTypeFromTheValueUnlessDeclared) {
-    const RecordingTarget t = parse("Option \"a\" true Option \"b\" 3 Option \"c\" \"x\" Option \"string d\" \"y\""
-                                    " Option \"float e\" [ 2 ]");
+    const RecordingTarget t = parse(
+        "Option \"a\" true Option \"b\" 3 Option \"c\" \"x\" Option \"string d\" \"y\""
+        " Option \"float e\" [ 2 ]");
     EXPECT_EQ(t.log, std::vector<std::string>({"Option a {bool a: true} @1:1", "Option b {float b: 3} @1:17",
                                                "Option c {string c: \"x\"} @1:30", "Option d {string d: \"y\"} @1:45",
                                                "Option e {float e: 2} @1:67"}));
 }
 
 TEST(PbrtParser, TransformsTakeSixteenNumbersWithOrWithoutBrackets) {
-    const RecordingTarget t = parse("Transform 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\nConcatTransform [1 2 3 4 5 6 7 8 9 10 "
-                                    "11 12 13 14 15 16]");
+    const RecordingTarget t = parse(
+        "Transform 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\nConcatTransform [1 2 3 4 5 6 7 8 9 10 "
+        "11 12 13 14 15 16]");
     EXPECT_EQ(t.log, std::vector<std::string>({"Transform 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1 @1:1",
                                                "ConcatTransform 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 @2:1"}));
 }
@@ -187,7 +189,8 @@ TEST(PbrtParser, NumbersOutOfRangeOrNotFiniteAreErrorsAtTheNumber) {
     EXPECT_EQ(error_of("Translate 1 1e999 2"), "s.pbrt:1:13: Translate: \"1e999\" is beyond the range of a double");
     EXPECT_EQ(error_of("Shape \"x\" \"float r\" -1e999"),
               "s.pbrt:1:21: \"float r\": \"-1e999\" is beyond the range of a double");
-    EXPECT_EQ(error_of("Shape \"x\" \"float r\" [ 1 nan ]"), "s.pbrt:1:25: \"float r\": expected a finite number, got \"nan\"");
+    EXPECT_EQ(error_of("Shape \"x\" \"float r\" [ 1 nan ]"),
+              "s.pbrt:1:25: \"float r\": expected a finite number, got \"nan\"");
     EXPECT_EQ(error_of("Scale inf 1 1"), "s.pbrt:1:7: Scale: expected a finite number, got \"inf\"");
     EXPECT_EQ(error_of("Scale 1 -infinity 1"), "s.pbrt:1:9: Scale: expected a finite number, got \"-infinity\"");
     EXPECT_EQ(error_of("Scale 1 1 1.5x"), "s.pbrt:1:11: Scale: expected a number, got \"1.5x\"");
@@ -201,22 +204,27 @@ TEST(PbrtParser, ValuesMustFitTheirType) {
               "s.pbrt:1:31: \"float radius\": expected a number, got the string \"big\"");
     EXPECT_EQ(error_of("Shape \"sphere\" \"float radius\" true"),
               "s.pbrt:1:31: \"float radius\": expected a number, got \"true\"");
-    EXPECT_EQ(error_of("Shape \"sphere\" \"string name\" 3"), "s.pbrt:1:30: \"string name\": expected a quoted string, got \"3\"");
+    EXPECT_EQ(error_of("Shape \"sphere\" \"string name\" 3"),
+              "s.pbrt:1:30: \"string name\": expected a quoted string, got \"3\"");
     EXPECT_EQ(error_of("Shape \"sphere\" \"texture t\" [ \"a\" b ]"),
               "s.pbrt:1:34: \"texture t\": expected a quoted string, got \"b\"");
-    EXPECT_EQ(error_of("Shape \"sphere\" \"bool b\" [ true 1 ]"), "s.pbrt:1:32: \"bool b\": expected true or false, got \"1\"");
+    EXPECT_EQ(error_of("Shape \"sphere\" \"bool b\" [ true 1 ]"),
+              "s.pbrt:1:32: \"bool b\": expected true or false, got \"1\"");
     EXPECT_EQ(error_of("Shape \"sphere\" \"bool b\" \"yes\""),
               "s.pbrt:1:25: \"bool b\": expected true or false, got the string \"yes\"");
-    EXPECT_EQ(error_of("Shape \"x\" \"integer n\" 1.5"), "s.pbrt:1:23: \"integer n\": expected a 32-bit integer, got \"1.5\"");
+    EXPECT_EQ(error_of("Shape \"x\" \"integer n\" 1.5"),
+              "s.pbrt:1:23: \"integer n\": expected a 32-bit integer, got \"1.5\"");
     EXPECT_EQ(error_of("Shape \"x\" \"integer n\" 2147483648"),
               "s.pbrt:1:23: \"integer n\": expected a 32-bit integer, got \"2147483648\"");
     EXPECT_EQ(error_of("Shape \"x\" \"integer n\" abc"), "s.pbrt:1:23: \"integer n\": expected a number, got \"abc\"");
     EXPECT_EQ(error_of("Shape \"x\" \"point3 P\" [ 1 2 3 4 ]"),
               "s.pbrt:1:22: \"point3 P\" has 4 numbers; expected a multiple of 3");
-    EXPECT_EQ(error_of("Shape \"x\" \"point2 uv\" 1"), "s.pbrt:1:23: \"point2 uv\" has 1 numbers; expected a multiple of 2");
+    EXPECT_EQ(error_of("Shape \"x\" \"point2 uv\" 1"),
+              "s.pbrt:1:23: \"point2 uv\" has 1 numbers; expected a multiple of 2");
     EXPECT_EQ(error_of("Shape \"x\" \"normal N\" [ 1 2 ]"),
               "s.pbrt:1:22: \"normal N\" has 2 numbers; expected a multiple of 3");
-    EXPECT_EQ(error_of("Shape \"x\" \"rgb L\" [ 1 2 3 4 ]"), "s.pbrt:1:19: \"rgb L\" has 4 numbers; expected a multiple of 3");
+    EXPECT_EQ(error_of("Shape \"x\" \"rgb L\" [ 1 2 3 4 ]"),
+              "s.pbrt:1:19: \"rgb L\" has 4 numbers; expected a multiple of 3");
     EXPECT_EQ(error_of("Shape \"x\" \"spectrum s\" [ 400 1 500 ]"),
               "s.pbrt:1:24: \"spectrum s\" has 3 numbers; a spectrum needs (lambda, value) pairs");
     EXPECT_TRUE(starts_with(error_of("Shape \"x\" \"spectrum s\" [ 400 1 \"a\" ]"),
@@ -227,8 +235,9 @@ TEST(PbrtParser, ValuesMustFitTheirType) {
 }
 
 TEST(PbrtParser, MalformedDeclarationsAreErrorsAtTheDeclaration) {
-    EXPECT_TRUE(starts_with(error_of("Shape \"sphere\" \"flaot radius\" 1"),
-                            "s.pbrt:1:16: unknown parameter type \"flaot\" in \"flaot radius\" (pbrt-v4 knows integer,"));
+    EXPECT_TRUE(
+        starts_with(error_of("Shape \"sphere\" \"flaot radius\" 1"),
+                    "s.pbrt:1:16: unknown parameter type \"flaot\" in \"flaot radius\" (pbrt-v4 knows integer,"));
     EXPECT_EQ(error_of("Shape \"sphere\" \"radius\" 1"),
               "s.pbrt:1:16: parameter \"radius\" has no type (expected \"type name\", e.g. \"float radius\")");
     EXPECT_EQ(error_of("Shape \"sphere\" \"float radius extra\" 1"),
@@ -253,10 +262,13 @@ TEST(PbrtParser, ListSyntaxErrors) {
 TEST(PbrtParser, DirectiveSyntaxErrors) {
     EXPECT_EQ(error_of("Shape \"sphere\"\n  Sphere \"x\""), "s.pbrt:2:3: unknown directive \"Sphere\"");
     EXPECT_EQ(error_of("shape \"sphere\""), "s.pbrt:1:1: unknown directive \"shape\"");
-    EXPECT_EQ(error_of("WorldBegin \"float radius\" 1"), "s.pbrt:1:12: expected a directive, got the string \"float radius\"");
+    EXPECT_EQ(error_of("WorldBegin \"float radius\" 1"),
+              "s.pbrt:1:12: expected a directive, got the string \"float radius\"");
     EXPECT_EQ(error_of("  ]"), "s.pbrt:1:3: expected a directive, got ]");
-    EXPECT_EQ(error_of("Shape"), "s.pbrt:1:1: Shape: expected the shape's type as a quoted string, got the end of the file");
-    EXPECT_EQ(error_of("Shape sphere"), "s.pbrt:1:7: Shape: expected the shape's type as a quoted string, got \"sphere\"");
+    EXPECT_EQ(error_of("Shape"),
+              "s.pbrt:1:1: Shape: expected the shape's type as a quoted string, got the end of the file");
+    EXPECT_EQ(error_of("Shape sphere"),
+              "s.pbrt:1:7: Shape: expected the shape's type as a quoted string, got \"sphere\"");
     EXPECT_EQ(error_of("Translate 1 2"), "s.pbrt:1:1: Translate: expected a number, got the end of the file");
     EXPECT_EQ(error_of("Translate 1 2 ["), "s.pbrt:1:15: Translate: expected a number, got [");
     EXPECT_EQ(error_of("Transform [ 1 2 3 ]"), "s.pbrt:1:11: Transform: expected 16 numbers, got 3");
@@ -264,12 +276,14 @@ TEST(PbrtParser, DirectiveSyntaxErrors) {
               "s.pbrt:1:45: Transform: expected ] after 16 numbers, got \"1\"");
     EXPECT_EQ(error_of("ActiveTransform Sometimes"),
               "s.pbrt:1:17: ActiveTransform: expected All, StartTime or EndTime, got \"Sometimes\"");
-    EXPECT_EQ(error_of("Option 3 4"), "s.pbrt:1:8: Option: expected the option's \"name\" as a quoted string, got \"3\"");
+    EXPECT_EQ(error_of("Option 3 4"),
+              "s.pbrt:1:8: Option: expected the option's \"name\" as a quoted string, got \"3\"");
     EXPECT_EQ(error_of("Texture \"t\" \"spectrum\""),
               "s.pbrt:1:1: Texture: expected the texture's class as a quoted string, got the end of the file");
     EXPECT_EQ(error_of("NamedMaterial [ \"a\" ]"),
               "s.pbrt:1:15: NamedMaterial: expected a material's name as a quoted string, got [");
-    EXPECT_EQ(error_of("Shape \"x\"\n\"float r\" \"unterminated\n"), "s.pbrt:2:11: unterminated string (a line break inside it)");
+    EXPECT_EQ(error_of("Shape \"x\"\n\"float r\" \"unterminated\n"),
+              "s.pbrt:2:11: unterminated string (a line break inside it)");
 }
 
 }  // namespace

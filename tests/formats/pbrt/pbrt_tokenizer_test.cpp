@@ -22,8 +22,7 @@ std::vector<std::string> tokens(const std::string& text, size_t chunk = 1 << 20,
                            : t.kind == Token::Kind::String ? "s"
                            : t.kind == Token::Kind::Open   ? "["
                                                            : "]";
-        out.push_back(std::string(kind) + ":" + t.text + "@" + std::to_string(t.line) + ":" +
-                      std::to_string(t.column));
+        out.push_back(std::string(kind) + ":" + t.text + "@" + std::to_string(t.line) + ":" + std::to_string(t.column));
     }
     return out;
 }
@@ -39,10 +38,10 @@ std::string error_of(const std::string& text, size_t chunk = 1 << 20, size_t max
 }
 
 TEST(PbrtTokenizer, WordsStringsBracketsWithTheirLinesAndColumns) {
-    EXPECT_EQ(tokens("Shape \"sphere\" \"float radius\" [ 2.5 ]\n\t-1e-3\ntrue][\"\"\"x\"\n"),
-              std::vector<std::string>({"w:Shape@1:1", "s:sphere@1:7", "s:float radius@1:16", "[:[@1:31",
-                                        "w:2.5@1:33", "]:]@1:37", "w:-1e-3@2:2", "w:true@3:1", "]:]@3:5",
-                                        "[:[@3:6", "s:@3:7", "s:x@3:9"}));
+    EXPECT_EQ(
+        tokens("Shape \"sphere\" \"float radius\" [ 2.5 ]\n\t-1e-3\ntrue][\"\"\"x\"\n"),
+        std::vector<std::string>({"w:Shape@1:1", "s:sphere@1:7", "s:float radius@1:16", "[:[@1:31", "w:2.5@1:33",
+                                  "]:]@1:37", "w:-1e-3@2:2", "w:true@3:1", "]:]@3:5", "[:[@3:6", "s:@3:7", "s:x@3:9"}));
 }
 
 TEST(PbrtTokenizer, CommentsRunToTheEndOfTheLine) {
@@ -57,14 +56,14 @@ TEST(PbrtTokenizer, CarriageReturnsAreSpace) {
 }
 
 TEST(PbrtTokenizer, StringEscapesAreDecoded) {
-    EXPECT_EQ(tokens(R"("a\"b\\c\nd\te\'f\bg\fh\ri")"),
-              std::vector<std::string>({"s:a\"b\\c\nd\te'f\bg\fh\ri@1:1"}));
+    EXPECT_EQ(tokens(R"("a\"b\\c\nd\te\'f\bg\fh\ri")"), std::vector<std::string>({"s:a\"b\\c\nd\te'f\bg\fh\ri@1:1"}));
     EXPECT_EQ(tokens(R"("path with spaces/and#hash")"), std::vector<std::string>({"s:path with spaces/and#hash@1:1"}));
 }
 
 TEST(PbrtTokenizer, AnUnknownEscapeIsAnErrorAtTheBackslash) {
-    EXPECT_EQ(error_of("\n  \"ab\\qc\""), "t.pbrt:2:6: unknown escape \\q in a string (pbrt-v4 knows \\b \\f \\n \\r "
-                                          "\\t \\\\ \\' \\\")");
+    EXPECT_EQ(error_of("\n  \"ab\\qc\""),
+              "t.pbrt:2:6: unknown escape \\q in a string (pbrt-v4 knows \\b \\f \\n \\r "
+              "\\t \\\\ \\' \\\")");
 }
 
 TEST(PbrtTokenizer, UnterminatedStringsAreErrorsAtTheirOpeningQuote) {

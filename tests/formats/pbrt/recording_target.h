@@ -99,8 +99,8 @@ class RecordingTarget : public Target {
         add("MediumInterface \"" + inside + "\" \"" + outside + "\"", at);
     }
     void world_begin(const Location& at) override { add("WorldBegin", at); }
-    void texture(const std::string& name, const std::string& value_type, const std::string& type,
-                 ParameterList params, const Location& at) override {
+    void texture(const std::string& name, const std::string& value_type, const std::string& type, ParameterList params,
+                 const Location& at) override {
         add("Texture " + name + " " + value_type + " " + type, at, std::move(params));
     }
     void material(const std::string& type, ParameterList params, const Location& at) override {
@@ -121,9 +121,7 @@ class RecordingTarget : public Target {
     }
     void object_begin(const std::string& name, const Location& at) override { add("ObjectBegin " + name, at); }
     void object_end(const Location& at) override { add("ObjectEnd", at); }
-    void object_instance(const std::string& name, const Location& at) override {
-        add("ObjectInstance " + name, at);
-    }
+    void object_instance(const std::string& name, const Location& at) override { add("ObjectInstance " + name, at); }
     void end_of_files() override { ended = true; }
     void warn(const Location& at, const std::string& message) override {
         warnings.push_back(describe(at) + ": " + message);

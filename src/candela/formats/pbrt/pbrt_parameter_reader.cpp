@@ -25,12 +25,23 @@ struct TypeInfo {
 
 // pbrt-v4's types (ParsedParameter; paramdict.cpp), with pbrt-v3's point, vector, normal and color.
 constexpr std::array<TypeInfo, 17> kTypes{{
-    {"integer", Values::Integers, 1}, {"float", Values::Numbers, 1},    {"point2", Values::Numbers, 2},
-    {"vector2", Values::Numbers, 2},  {"point3", Values::Numbers, 3},   {"vector3", Values::Numbers, 3},
-    {"normal", Values::Numbers, 3},   {"normal3", Values::Numbers, 3},  {"point", Values::Numbers, 3},
-    {"vector", Values::Numbers, 3},   {"color", Values::Numbers, 3},    {"rgb", Values::Numbers, 3},
-    {"blackbody", Values::Numbers, 1}, {"spectrum", Values::Spectrum, 2}, {"bool", Values::Bools, 1},
-    {"string", Values::Strings, 1},   {"texture", Values::Strings, 1},
+    {"integer", Values::Integers, 1},
+    {"float", Values::Numbers, 1},
+    {"point2", Values::Numbers, 2},
+    {"vector2", Values::Numbers, 2},
+    {"point3", Values::Numbers, 3},
+    {"vector3", Values::Numbers, 3},
+    {"normal", Values::Numbers, 3},
+    {"normal3", Values::Numbers, 3},
+    {"point", Values::Numbers, 3},
+    {"vector", Values::Numbers, 3},
+    {"color", Values::Numbers, 3},
+    {"rgb", Values::Numbers, 3},
+    {"blackbody", Values::Numbers, 1},
+    {"spectrum", Values::Spectrum, 2},
+    {"bool", Values::Bools, 1},
+    {"string", Values::Strings, 1},
+    {"texture", Values::Strings, 1},
 }};
 
 const TypeInfo* find_type(std::string_view name) {
@@ -94,7 +105,8 @@ std::pair<std::string_view, std::string_view> split_declaration(const Token& dec
         if (untyped_allowed) return {{}, words[0]};
         fail(declaration.location(), "parameter " + quote_text(declaration.text) + " has no type" + hint);
     }
-    if (count > 2) fail(declaration.location(), "malformed parameter declaration " + quote_text(declaration.text) + hint);
+    if (count > 2)
+        fail(declaration.location(), "malformed parameter declaration " + quote_text(declaration.text) + hint);
     return {words[0], words[1]};
 }
 
@@ -122,7 +134,8 @@ class ValueReader {
             case Values::Spectrum:
                 if (v.kind == Token::Kind::String) {
                     if (!p_.numbers.empty() || !p_.strings.empty())
-                        fail(v.location(), context_ + ": a spectrum is (lambda, value) pairs or one name or file, got " +
+                        fail(v.location(), context_ +
+                                               ": a spectrum is (lambda, value) pairs or one name or file, got " +
                                                describe_token(v) + " after them");
                     p_.strings.push_back(v.text);
                     return;
@@ -174,7 +187,8 @@ double parse_number(const Token& word, std::string_view context) {
         // from_chars reports underflow too; strtod tells 1e-999 (0, as pbrt-v4 reads it) from 1e999.
         value = std::strtod(std::string(s).c_str(), nullptr);
         if (std::isinf(value))
-            fail(word.location(), std::string(context) + ": " + quote_text(word.text) + " is beyond the range of a double");
+            fail(word.location(),
+                 std::string(context) + ": " + quote_text(word.text) + " is beyond the range of a double");
     }
     if (!std::isfinite(value))
         fail(word.location(), std::string(context) + ": expected a finite number, got " + quote_text(word.text));
@@ -218,8 +232,8 @@ Parameter read_parameter(TokenStream& tokens, const Token& declaration, bool unt
 
     if (p.type.empty()) p.type = !p.bools.empty() ? "bool" : !p.strings.empty() ? "string" : "float";
     if (type && type->values == Values::Spectrum && p.strings.empty() && p.numbers.size() % 2 != 0)
-        fail(first, context + " has " + std::to_string(p.numbers.size()) +
-                        " numbers; a spectrum needs (lambda, value) pairs");
+        fail(first,
+             context + " has " + std::to_string(p.numbers.size()) + " numbers; a spectrum needs (lambda, value) pairs");
     if (type && type->arity > 1 && type->values == Values::Numbers && p.numbers.size() % type->arity != 0)
         fail(first, context + " has " + std::to_string(p.numbers.size()) + " numbers; expected a multiple of " +
                         std::to_string(type->arity));

@@ -55,7 +55,8 @@ class Parser {
     }
     double number_argument(const Location& at) {
         const Token& t = argument(at, "a number");
-        if (t.kind != Token::Kind::Word) fail(t.location(), word_.text + ": expected a number, got " + describe_token(t));
+        if (t.kind != Token::Kind::Word)
+            fail(t.location(), word_.text + ": expected a number, got " + describe_token(t));
         return parse_number(t, word_.text);
     }
     template <size_t N>
@@ -140,8 +141,9 @@ void Parser::dispatch(Directive d, const Location& at) {
         case Directive::AttributeEnd: target_.attribute_end(at); return;
         case Directive::TransformBegin:
             if (!warned_transform_begin_) {
-                target_.warn(at, "TransformBegin/TransformEnd are deprecated in pbrt-v4; read as "
-                                 "AttributeBegin/AttributeEnd");
+                target_.warn(at,
+                             "TransformBegin/TransformEnd are deprecated in pbrt-v4; read as "
+                             "AttributeBegin/AttributeEnd");
                 warned_transform_begin_ = true;
             }
             target_.attribute_begin(at);
@@ -155,8 +157,8 @@ void Parser::dispatch(Directive d, const Location& at) {
         case Directive::Option: {
             Token declaration = argument(at, "an option's \"name\" as a quoted string");
             if (declaration.kind != Token::Kind::String)
-                fail(declaration.location(), "Option: expected the option's \"name\" as a quoted string, got " +
-                                                 describe_token(declaration));
+                fail(declaration.location(),
+                     "Option: expected the option's \"name\" as a quoted string, got " + describe_token(declaration));
             const Parameter value = read_parameter(tokens_, declaration, true);
             target_.option(value.name, value, at);
             return;
@@ -206,7 +208,9 @@ void Parser::dispatch(Directive d, const Location& at) {
             return;
         }
         case Directive::WorldBegin: target_.world_begin(at); return;
-        case Directive::WorldEnd: target_.warn(at, "WorldEnd is pbrt-v3's and means nothing in pbrt-v4; ignored"); return;
+        case Directive::WorldEnd:
+            target_.warn(at, "WorldEnd is pbrt-v3's and means nothing in pbrt-v4; ignored");
+            return;
         case Directive::Texture: {
             const std::string name = string_argument(at, "the texture's name");
             const std::string value_type = string_argument(at, "the texture's value type (\"spectrum\" or \"float\")");

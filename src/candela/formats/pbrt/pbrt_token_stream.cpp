@@ -36,12 +36,14 @@ void TokenStream::open_main_file(const fs::path& name) {
         const int error = errno;
         fail(*origin, std::string("cannot open the scene: ") + std::strerror(error));
     }
-    files_.push_back({std::make_unique<Tokenizer>(stream, origin, options_.chunk_size, options_.max_token_bytes), origin, identity_of(name)});
+    files_.push_back({std::make_unique<Tokenizer>(stream, origin, options_.chunk_size, options_.max_token_bytes),
+                      origin, identity_of(name)});
 }
 
 void TokenStream::open_main_text(std::string_view text, const fs::path& name) {
     const Location* origin = add_origin(name.generic_string(), nullptr);
-    files_.push_back({std::make_unique<Tokenizer>(text, origin, options_.chunk_size, options_.max_token_bytes), origin, identity_of(name)});
+    files_.push_back({std::make_unique<Tokenizer>(text, origin, options_.chunk_size, options_.max_token_bytes), origin,
+                      identity_of(name)});
 }
 
 void TokenStream::include(const std::string& name, const Token& directive) {
@@ -50,8 +52,8 @@ void TokenStream::include(const std::string& name, const Token& directive) {
     const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : fs::path(at.file).parent_path() / name;
     const std::string display_name = path.lexically_normal().generic_string();
     if (files_.size() >= size_t(options_.max_include_depth))
-        fail(at, "\"" + name + "\": includes nest deeper than " + std::to_string(options_.max_include_depth) +
-                     " files");
+        fail(at,
+             "\"" + name + "\": includes nest deeper than " + std::to_string(options_.max_include_depth) + " files");
     const fs::path identity = identity_of(path);
     for (size_t i = 0; i < files_.size(); ++i) {
         if (files_[i].identity != identity) continue;
@@ -70,7 +72,8 @@ void TokenStream::include(const std::string& name, const Token& directive) {
         fail(at, "cannot open \"" + display_name + "\": " + std::strerror(error));
     }
     const Location* origin = add_origin(display_name, std::make_shared<const IncludeSite>(IncludeSite{at}));
-    files_.push_back({std::make_unique<Tokenizer>(stream, origin, options_.chunk_size, options_.max_token_bytes), origin, identity});
+    files_.push_back(
+        {std::make_unique<Tokenizer>(stream, origin, options_.chunk_size, options_.max_token_bytes), origin, identity});
 }
 
 bool TokenStream::read(Token& out) {

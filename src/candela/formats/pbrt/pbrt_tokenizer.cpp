@@ -164,7 +164,8 @@ void Tokenizer::read_string(Token& out) {
                 case -1: fail_at(out.line, out.column, "unterminated string (the file ends inside it)");
                 default:
                     fail_at(line_, escape_column,
-                            std::string("unknown escape \\") + char(e) + " in a string (pbrt-v4 knows \\b \\f \\n \\r \\t \\\\ \\' \\\")");
+                            std::string("unknown escape \\") + char(e) +
+                                " in a string (pbrt-v4 knows \\b \\f \\n \\r \\t \\\\ \\' \\\")");
             }
             ++pos_;
             check_length(out, 1);

@@ -62,9 +62,9 @@ class Tokenizer {
     const Location* file_;
     size_t max_token_bytes_;
     std::vector<char> buffer_;
-    size_t pos_ = 0;         // read position in buffer_
-    size_t end_ = 0;         // bytes held in buffer_
-    uint64_t offset_ = 0;    // the file offset of buffer_[0]
+    size_t pos_ = 0;       // read position in buffer_
+    size_t end_ = 0;       // bytes held in buffer_
+    uint64_t offset_ = 0;  // the file offset of buffer_[0]
     int line_ = 1;
     uint64_t line_start_ = 0;  // the file offset of the current line's first byte
 };
