@@ -34,7 +34,10 @@ Tokenizer::Tokenizer(std::FILE* stream, const Location* file, size_t chunk_size,
     : stream_(stream), file_(file), max_token_bytes_(max_token_bytes), buffer_(std::max<size_t>(chunk_size, 1)) {}
 
 Tokenizer::Tokenizer(std::string_view text, const Location* file, size_t chunk_size, size_t max_token_bytes)
-    : text_(text), file_(file), max_token_bytes_(max_token_bytes), buffer_(std::max<size_t>(chunk_size, 1)) {}
+    : text_(text),
+      file_(file),
+      max_token_bytes_(max_token_bytes),
+      buffer_(std::clamp<size_t>(text.size(), 1, std::max<size_t>(chunk_size, 1))) {}
 
 Tokenizer::~Tokenizer() {
     if (stream_) std::fclose(stream_);
