@@ -7,6 +7,8 @@ packages=(
   build-essential cmake pkg-config ccache
   libembree-dev libtbb-dev libopenexr-dev libstb-dev libtinyobjloader-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
+  # gzip-compressed PLY meshes (.ply.gz) and Loop subdivision (pbrt-v4's plymesh, loopsubdiv).
+  zlib1g-dev libosd-dev
   # The sanitizer and fuzzing build (scripts/sanitize.sh, scripts/fuzz.sh): clang 14, its
   # ASan/UBSan/libFuzzer runtimes (only recommended by clang, so named here) and
   # llvm-symbolizer for readable sanitizer reports.

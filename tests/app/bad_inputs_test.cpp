@@ -315,7 +315,7 @@ const BadInput kBadInputs[] = {
     {"mesh_is_folder.json", kFileAccess, kError, "", 3, 39, "/shapes/0/file",
      "mesh file \"mesh_is_folder.obj\" is a folder, not a file"},
     {"mesh_unknown_extension.json", kFileAccess, kError, "mesh_unknown_extension.stl", 0, 0, "",
-     "unknown mesh file extension \".stl\"; expected one of: .obj, .ply"},
+     "unknown mesh file extension \".stl\"; expected one of: .obj, .ply, .ply.gz"},
     {"mesh_unreadable.json", kFileAccess, kError, "mesh_unreadable.ply", 0, 0, "",
      "cannot read mesh file: Permission denied"},
     {"missing_environment_file.json", kFileAccess, kError, "", 3, 37, "/lights/0/file",

@@ -91,7 +91,7 @@ TEST(MeshLoader, LoadsObjWhoseMaterialLibraryIsMissing) {
 TEST(MeshLoader, RejectsUnknownExtensionListingKnownOnes) {
     const SceneError e = load_error(fixture("cube.stl"));
     EXPECT_EQ(e.where().file, fixture("cube.stl").string());
-    EXPECT_TRUE(contains(e.message(), "unknown mesh file extension \".stl\"; expected one of: .obj, .ply"));
+    EXPECT_TRUE(contains(e.message(), "unknown mesh file extension \".stl\"; expected one of: .obj, .ply, .ply.gz"));
     EXPECT_TRUE(contains(load_error(fixture("cube")).message(), "unknown mesh file extension \"\""));
 }
 

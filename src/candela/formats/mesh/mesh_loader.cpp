@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "candela/core/error.h"
+#include "candela/formats/mesh/gzip_stream.h"
 #include "candela/formats/mesh/obj_loader.h"
 #include "candela/formats/mesh/ply_loader.h"
 
@@ -29,8 +30,32 @@ struct MeshFormat {
     MeshParser parse;
 };
 
-// The one table of mesh formats: dispatch and the error message both read it.
-constexpr MeshFormat kMeshFormats[] = {{".obj", parse_obj}, {".ply", parse_ply}};
+// A gzip-compressed PLY (pbrt-v4 reads them, through zlib). The header is inflated first and the
+// mesh's size checked from it, so that a mesh too large is refused before its data is inflated;
+// the rest is then inflated into memory and parsed as a PLY. Data that is not gzip-compressed is
+// read as a plain PLY, as zlib's gzread (and so pbrt-v4) reads it.
+TriangleMesh parse_gzipped_ply(std::string_view bytes, const std::string& file_name, const MeshSizeCheck& check) {
+    if (!is_gzip(bytes)) return parse_ply(bytes, file_name, check);
+    GzipStream stream(bytes, file_name);
+    std::string ply;
+    // A header is a few hundred bytes; past 16 MiB without an end_header line, parse_ply_header
+    // reports what is wrong with what came.
+    constexpr size_t kPiece = 4096, kMaxHeader = size_t{16} << 20;
+    const auto header_complete = [&ply] {
+        const size_t end = ply.find("\nend_header");
+        return end != std::string::npos && ply.find('\n', end + 1) != std::string::npos;
+    };
+    bool more = true;
+    while (more && !header_complete() && ply.size() < kMaxHeader) more = stream.inflate_some(ply, kPiece);
+    const MeshSize size = ply_mesh_size(ply, file_name);
+    if (check) check(size);
+    stream.inflate_rest(ply);
+    return parse_ply(ply, file_name);
+}
+
+// The one table of mesh formats: dispatch and the error message both read it. A file name is
+// matched by its ending, the longest matching extension winning.
+constexpr MeshFormat kMeshFormats[] = {{".obj", parse_obj}, {".ply", parse_ply}, {".ply.gz", parse_gzipped_ply}};
 
 std::string lower_case(std::string s) {
     for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -112,11 +137,14 @@ void finish(TriangleMesh& mesh, const std::string& name) {
 
 TriangleMesh load_mesh(const std::filesystem::path& file, const MeshSizeCheck& check) {
     const std::string name = file.string();
-    const std::string extension = lower_case(file.extension().string());
-    for (const MeshFormat& format : kMeshFormats) {
-        if (format.extension != extension) continue;
+    const std::string file_name = lower_case(file.filename().string());
+    const MeshFormat* match = nullptr;
+    for (const MeshFormat& format : kMeshFormats)
+        if (file_name.ends_with(format.extension) && (!match || format.extension.size() > match->extension.size()))
+            match = &format;
+    if (match) {
         const MappedFile bytes(file, name);
-        TriangleMesh mesh = format.parse(bytes.bytes(), name, check);
+        TriangleMesh mesh = match->parse(bytes.bytes(), name, check);
         finish(mesh, name);
         return mesh;
     }

@@ -1,5 +1,6 @@
 #pragma once
-// Loads a triangle mesh file in object space, by extension: .obj (tinyobjloader) or .ply.
+// Loads a triangle mesh file in object space, by extension (any case): .obj (tinyobjloader), .ply,
+// or .ply.gz (a gzip-compressed PLY, as pbrt-v4 reads them).
 // Throws SceneError naming the file (and line, where the format has lines) on bad input.
 #include <filesystem>
 

@@ -387,33 +387,60 @@ const PlyElement& find_element(const PlyHeader& header, std::string_view name, c
     fail_at(file, header.end_line, fmt::format("the PLY header declares no \"{}\" element", name));
 }
 
+// What the header says and how the vertex and face records will be read.
+struct PlyPlan {
+    PlyHeader header;
+    const PlyElement* vertices = nullptr;
+    const PlyElement* faces = nullptr;
+    VertexLayout vertex;
+    FaceLayout face;
+
+    // PlyPlan points into its own header: it is never copied or moved once made.
+    PlyPlan(std::string_view bytes, const std::string& file_name) : header(parse_ply_header(bytes, file_name)) {
+        vertices = &find_element(header, "vertex", file_name);
+        faces = &find_element(header, "face", file_name);
+        vertex = vertex_layout(*vertices, file_name);
+        face = face_layout(*faces, file_name);
+        if (vertices->count > std::numeric_limits<uint32_t>::max())
+            fail_at(file_name, vertices->line,
+                    fmt::format("{} vertices are more than the 2^32 - 1 a mesh can index", vertices->count));
+    }
+    PlyPlan(const PlyPlan&) = delete;
+    PlyPlan& operator=(const PlyPlan&) = delete;
+
+    // Embree numbers triangles with 32 bits, and every face makes at least one.
+    void check_face_count(const std::string& file_name) const {
+        if (faces->count > std::numeric_limits<uint32_t>::max())
+            fail_at(file_name, faces->line,
+                    fmt::format("{} faces are more than the 2^32 - 1 triangles a mesh can index", faces->count));
+    }
+    MeshSize size() const { return MeshSize{vertices->count, faces->count, 0, vertex.has_normals, vertex.has_uvs}; }
+};
+
 }  // namespace
 
+MeshSize ply_mesh_size(std::string_view header_bytes, const std::string& file_name) {
+    const PlyPlan plan(header_bytes, file_name);
+    plan.check_face_count(file_name);
+    return plan.size();
+}
+
 TriangleMesh parse_ply(std::string_view bytes, const std::string& file_name, const MeshSizeCheck& check) {
-    const PlyHeader header = parse_ply_header(bytes, file_name);
-    const PlyElement& vertices = find_element(header, "vertex", file_name);
-    const PlyElement& faces = find_element(header, "face", file_name);
-    const VertexLayout vertex = vertex_layout(vertices, file_name);
-    const FaceLayout face = face_layout(faces, file_name);
-    if (vertices.count > std::numeric_limits<uint32_t>::max())
-        fail_at(file_name, vertices.line,
-                fmt::format("{} vertices are more than the 2^32 - 1 a mesh can index", vertices.count));
+    const PlyPlan plan(bytes, file_name);
+    const PlyHeader& header = plan.header;
     const std::string_view data = bytes.substr(header.data_offset);
     check_ply_counts_fit(header, data.size(), file_name);
-    // Embree numbers triangles with 32 bits, and every face makes at least one.
-    if (faces.count > std::numeric_limits<uint32_t>::max())
-        fail_at(file_name, faces.line,
-                fmt::format("{} faces are more than the 2^32 - 1 triangles a mesh can index", faces.count));
-    if (check) check(MeshSize{vertices.count, faces.count, 0, vertex.has_normals, vertex.has_uvs});
+    plan.check_face_count(file_name);
+    if (check) check(plan.size());
 
     if (header.format == PlyFormat::kAscii) {
         AsciiCursor c(data, header.end_line + 1, file_name);
-        return read_data(c, header, vertices, vertex, faces, face, data.size());
+        return read_data(c, header, *plan.vertices, plan.vertex, *plan.faces, plan.face, data.size());
     }
     const bool file_is_little = header.format == PlyFormat::kBinaryLittleEndian;
     const bool swap = file_is_little != (std::endian::native == std::endian::little);
     BinaryCursor c(data, swap, file_name);
-    return read_data(c, header, vertices, vertex, faces, face, data.size());
+    return read_data(c, header, *plan.vertices, plan.vertex, *plan.faces, plan.face, data.size());
 }
 
 }  // namespace candela
