@@ -41,7 +41,7 @@ seed_files() {
   case "$1" in
     scene) patterns=(-name '*.json') ;;
     obj) patterns=(-iname '*.obj') ;;
-    ply) patterns=(-iname '*.ply') ;;
+    ply) patterns=(-iname '*.ply' -o -iname '*.ply.gz') ;;
     hdr) patterns=(-iname '*.hdr') ;;
     exr) patterns=(-iname '*.exr') ;;
     pbrt) patterns=(-iname '*.pbrt') ;;

@@ -349,7 +349,7 @@ const BadInput kBadInputs[] = {
      "a vertex position (v x y z): \"nan\" is not a finite number within float range"},
     {"obj_vertex_not_number.json", kObj, kError, "obj_vertex_not_number.obj", 4, 0, "",
      "a vertex position (v x y z): expected a number, got \"one\""},
-    // --- PLY meshes (15)
+    // --- PLY meshes (16)
     {"ply_absurd_face_count.json", kPly, kError, "ply_absurd_face_count.ply", 7, 0, "",
      "element \"face\" declares 10000000000 records of at least 1 bytes each, but the data after the header has only 49 bytes"},
     {"ply_absurd_list_length.json", kPly, kError, "ply_absurd_list_length.ply", 0, 0, "",
@@ -360,6 +360,8 @@ const BadInput kBadInputs[] = {
      "element \"vertex\", record 2 of 3: expected a value of type float, got \"zero\""},
     {"ply_ascii_index_out_of_range.json", kPly, kError, "ply_ascii_index_out_of_range.ply", 13, 0, "",
      "element \"face\", record 1 of 1: vertex index 3 is out of range; the file has 3 vertices"},
+    {"ply_gz_truncated.json", kPly, kError, "ply_gz_truncated.ply.gz", 0, 0, "",
+     "the gzip data ends before the stream does (file truncated?)"},
     {"ply_index_out_of_range.json", kPly, kError, "ply_index_out_of_range.ply", 0, 0, "",
      "element \"face\", record 1 of 1: vertex index 7 is out of range; the file has 3 vertices (at byte 49 of the data after the header)"},
     {"ply_missing_end_header.json", kPly, kError, "ply_missing_end_header.ply", 6, 0, "",

@@ -2,6 +2,7 @@
 """Writes the files of this corpus that are binary, large, or hold bytes an editor would change
 (NUL, invalid UTF-8, a raw tab in a string). Run once from here; the outputs are committed.
 The scenes that reference them, and every other file here, are plain text kept by hand."""
+import gzip
 import struct
 
 DEPTH = 100000  # deep enough to overflow any recursive reader's stack
@@ -56,6 +57,8 @@ write("ply_vertex_count_beyond_index.ply", triangle_ply(vertex_count=10**12))
 write("ply_absurd_list_length.ply", triangle_ply(faces=struct.pack("<I3i", 4000000000, 0, 1, 2),
                                                  face_props=["list uint int vertex_indices"]))
 write("ply_two_corner_face.ply", triangle_ply(faces=struct.pack("<B2i", 2, 0, 1)))
+# A gzip-compressed PLY cut off inside its compressed data (mtime 0: the same bytes every run).
+write("ply_gz_truncated.ply.gz", gzip.compress(triangle_ply(), mtime=0)[:30])
 write("mesh_binary_garbage.obj", bytes(range(256)) * 2)
 write("mesh_empty.obj", b"")
 write("mesh_empty.ply", b"")

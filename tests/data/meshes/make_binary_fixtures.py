@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
 """Writes the binary PLY fixtures of this folder. Run once from here; the outputs are committed."""
+import gzip
 import struct
 
 # The cube [-1,1]^3; every face counter-clockwise seen from outside (normal points out).
@@ -64,3 +65,5 @@ write("cube_big_endian.ply", cube(">", "double", "uint", "uint"))
 write("extra_elements_binary.ply", extra_elements())
 full = cube("<", "float", "uchar", "int")
 write("truncated_binary.ply", full[:len(full) - 40])  # ends inside the face records
+# gzip-compressed, as pbrt-v4 scenes ship meshes; mtime 0 keeps the bytes the same at every run.
+write("cube.ply.gz", gzip.compress(full, compresslevel=9, mtime=0))

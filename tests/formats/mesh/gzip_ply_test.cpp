@@ -102,6 +102,17 @@ TEST(GzipPly, LoadsAsThePlainFileLoads) {
     }
 }
 
+TEST(GzipPly, LoadsTheCommittedFixture) {
+    // Written by Python's gzip module (make_binary_fixtures.py), not by the zlib calls above.
+    expect_same_mesh(load_mesh(fixture("cube.ply.gz")), load_mesh(fixture("cube.ply")));
+}
+
+TEST(GzipPly, RejectsGzippedDataThatIsNotAPlyAtItsFirstLine) {
+    const SceneError e = load_error(write_bytes("not_a_ply.ply.gz", gzip(std::string(1 << 20, 'x'))));
+    EXPECT_EQ(e.where().line, 1);
+    EXPECT_TRUE(contains(e.message(), "not a PLY file"));
+}
+
 TEST(GzipPly, ChoosesTheFormatByTheDoubleExtensionIgnoringCase) {
     const std::filesystem::path gz = write_bytes("CUBE.Ply.GZ", gzip(read_bytes(fixture("cube.ply"))));
     EXPECT_EQ(load_mesh(gz).triangle_count(), 12u);

@@ -15,8 +15,8 @@
 #include <string_view>
 
 #include "candela/core/error.h"
-#include "candela/formats/mesh/gzip_stream.h"
 #include "candela/formats/mesh/obj_loader.h"
+#include "candela/formats/mesh/ply_gz_loader.h"
 #include "candela/formats/mesh/ply_loader.h"
 
 namespace candela {
@@ -30,32 +30,9 @@ struct MeshFormat {
     MeshParser parse;
 };
 
-// A gzip-compressed PLY (pbrt-v4 reads them, through zlib). The header is inflated first and the
-// mesh's size checked from it, so that a mesh too large is refused before its data is inflated;
-// the rest is then inflated into memory and parsed as a PLY. Data that is not gzip-compressed is
-// read as a plain PLY, as zlib's gzread (and so pbrt-v4) reads it.
-TriangleMesh parse_gzipped_ply(std::string_view bytes, const std::string& file_name, const MeshSizeCheck& check) {
-    if (!is_gzip(bytes)) return parse_ply(bytes, file_name, check);
-    GzipStream stream(bytes, file_name);
-    std::string ply;
-    // A header is a few hundred bytes; past 16 MiB without an end_header line, parse_ply_header
-    // reports what is wrong with what came.
-    constexpr size_t kPiece = 4096, kMaxHeader = size_t{16} << 20;
-    const auto header_complete = [&ply] {
-        const size_t end = ply.find("\nend_header");
-        return end != std::string::npos && ply.find('\n', end + 1) != std::string::npos;
-    };
-    bool more = true;
-    while (more && !header_complete() && ply.size() < kMaxHeader) more = stream.inflate_some(ply, kPiece);
-    const MeshSize size = ply_mesh_size(ply, file_name);
-    if (check) check(size);
-    stream.inflate_rest(ply);
-    return parse_ply(ply, file_name);
-}
-
 // The one table of mesh formats: dispatch and the error message both read it. A file name is
 // matched by its ending, the longest matching extension winning.
-constexpr MeshFormat kMeshFormats[] = {{".obj", parse_obj}, {".ply", parse_ply}, {".ply.gz", parse_gzipped_ply}};
+constexpr MeshFormat kMeshFormats[] = {{".obj", parse_obj}, {".ply", parse_ply}, {".ply.gz", parse_ply_gz}};
 
 std::string lower_case(std::string s) {
     for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
