@@ -247,10 +247,15 @@ TEST(LoopSubdivision, RejectsWhatItCannotSubdivide) {
               "loop subdivision index 4 (number 3) is out of range; there are 4 positions");
     EXPECT_EQ(error_of({tetrahedron().positions, {0, 1, 2}}, 1), "loop subdivision position 3 is used by no triangle");
     EXPECT_EQ(error_of(tetrahedron(), 15),
-              "4 triangles subdivided 15 times are more than the 2^32 - 1 a mesh can index");
+              "4 triangles subdivided 15 times are more than the 2^31 - 1 OpenSubdiv can index");
     // Two triangles sharing an edge in the same direction: wound inconsistently.
     const Polyhedron flipped = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {0, 1, 2, 1, 2, 3}};
     EXPECT_TRUE(error_of(flipped, 1).starts_with("the loop subdivision surface is not a consistently wound manifold"));
+    // Two triangles meeting at a vertex only, and a triangle with a repeated corner.
+    const Polyhedron bowtie = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}}, {0, 1, 2, 0, 3, 4}};
+    EXPECT_TRUE(error_of(bowtie, 1).starts_with("the loop subdivision surface is not a consistently wound manifold at position 0"));
+    const Polyhedron repeated = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2, 0, 0, 1}};
+    EXPECT_TRUE(error_of(repeated, 1).starts_with("the loop subdivision surface is not a consistently wound manifold"));
 }
 
 }  // namespace

@@ -170,10 +170,12 @@ void check_input(std::span<const Vec3f> positions, std::span<const int> indices,
     }
     for (size_t i = 0; i < used.size(); ++i)
         if (!used[i]) fail(fmt::format("loop subdivision position {} is used by no triangle", i));
-    const uint64_t triangles = (indices.size() / 3) << (2 * levels);
-    if (indices.size() / 3 > (uint64_t{1} << 32) >> (2 * levels) || triangles > std::numeric_limits<uint32_t>::max())
-        fail(fmt::format("{} triangles subdivided {} times are more than the 2^32 - 1 a mesh can index",
-                         indices.size() / 3, levels));
+    // OpenSubdiv numbers vertices and faces with int.
+    const uint64_t triangles = indices.size() / 3;
+    if (triangles > (uint64_t{std::numeric_limits<int>::max()} >> (2 * levels)) ||
+        positions.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
+        fail(fmt::format("{} triangles subdivided {} times are more than the 2^31 - 1 OpenSubdiv can index",
+                         triangles, levels));
 }
 
 }  // namespace
@@ -196,7 +198,10 @@ TriangleMesh loop_subdivide(std::span<const Vec3f> positions, std::span<const in
     const Far::TopologyLevel& base = refiner->GetLevel(0);
     for (Far::Index v = 0; v < base.GetNumVertices(); ++v)
         if (base.IsVertexNonManifold(v))
-            fail(fmt::format("the loop subdivision surface is not a consistently wound manifold at position {}", v));
+            fail(fmt::format("the loop subdivision surface is not a consistently wound manifold at position {} (an "
+                             "edge of more than two triangles, two fans meeting at a vertex, a degenerate "
+                             "triangle, or neighbours wound opposite ways)",
+                             v));
     if (levels > 0) {
         Far::TopologyRefiner::UniformOptions uniform(levels);
         uniform.fullTopologyInLastLevel = true;

@@ -26,8 +26,8 @@ inline constexpr int kMaxLoopLevels = 15;
 // input's, keeping candela's rule that the winding and the normals agree on the front.
 // Throws SceneError (without a location: the caller adds it) for an index count that is not a
 // multiple of 3, an index out of range, a position no triangle uses, a non-manifold or
-// inconsistently wound mesh, `levels` outside [0, kMaxLoopLevels], or a result beyond 2^32 - 1
-// triangles.
+// inconsistently wound mesh, `levels` outside [0, kMaxLoopLevels], or a result beyond 2^31 - 1
+// triangles (OpenSubdiv's int indices).
 TriangleMesh loop_subdivide(std::span<const Vec3f> positions, std::span<const int> indices, int levels);
 
 }  // namespace candela
