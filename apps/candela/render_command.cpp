@@ -196,7 +196,7 @@ int run_render(const RenderArgs& a) {
 
     // Everything that must match for a checkpoint to continue this render (after the overrides).
     const RenderIdentity identity = render_identity(scene, scene_content_hash(scene));
-    RenderState start{Film(scene.camera.width, scene.camera.height)};
+    RenderState start{make_film(scene)};
     if (a.resume) {
         Checkpoint resumed = read_checkpoint(*a.resume);
         check_checkpoint_matches(*a.resume, resumed.identity, identity);

@@ -189,10 +189,35 @@ TEST(Checkpoint, NewerFormatIsRefused) {
     const fs::path file = temp_file("newer.ckpt");
     write_checkpoint(file, identity(), state());
     std::string bytes = read_bytes(file);
-    bytes[8] = 2;  // the format version's low byte
+    bytes[8] = 3;  // the format version's low byte
     write_bytes(file, bytes);
-    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("format version 2; this candela reads version 1"),
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("format version 3; this candela reads versions 1 and 2"),
               std::string::npos);
+}
+
+TEST(Checkpoint, WeightSumsRoundTripInVersionTwo) {
+    const fs::path file = temp_file("weighted.ckpt");
+    RenderState s = state();
+    std::vector<double> weights(15);
+    for (size_t i = 0; i < weights.size(); ++i) weights[i] = -1.0 / 7.0 + double(i) * 1e-3;
+    s.film = Film(5, 3, s.film.sums(), weights);
+    write_checkpoint(file, identity(), s);
+    std::string bytes = read_bytes(file);
+    EXPECT_EQ(bytes[8], 2);
+    EXPECT_EQ(bytes.size(), kHeaderBytes + 15 * 4 * 8 + 8);
+    const Checkpoint c = read_checkpoint(file);
+    ASSERT_TRUE(c.state.film.weighted());
+    EXPECT_EQ(std::memcmp(c.state.film.weights().data(), weights.data(), weights.size() * sizeof(double)), 0);
+    EXPECT_EQ(std::memcmp(c.state.film.sums().data(), s.film.sums().data(), 15 * sizeof(PixelSum)), 0);
+    // Without weights the file is version 1, as before them.
+    write_checkpoint(file, identity(), state());
+    EXPECT_EQ(read_bytes(file)[8], 1);
+    EXPECT_FALSE(read_checkpoint(file).state.film.weighted());
+    // A version 1 file relabelled 2 is too short for its weights.
+    bytes = read_bytes(file);
+    bytes[8] = 2;
+    write_bytes(file, bytes);
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("truncated checkpoint"), std::string::npos);
 }
 
 TEST(Checkpoint, EveryTruncationIsAClearError) {

@@ -4,7 +4,7 @@
 //
 // render_moments() replays the renderer's loop (renderer.cpp): the same accelerator, light set,
 // camera and integrator, one Rng::for_sample(pixel, sample, seed) stream per sample, film
-// positions from sample_filter, non-finite samples dropped and counted as zero. It sums each
+// positions from PixelFilter::sample, non-finite samples dropped and counted as zero. It sums each
 // pixel's samples in sample-index order in double, as Film does, so image() is bit-identical to
 // render()'s image (agreement_render_test.cpp asserts this); it also sums their squares, which
 // gives each pixel mean's variance. The samples of one pixel are independent and identically
@@ -33,7 +33,7 @@
 #include <gtest/gtest.h>
 
 #include "candela/camera/camera.h"
-#include "candela/film/filter.h"
+#include "candela/film/pixel_filter.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/image/image.h"
 #include "candela/image/image_io.h"
@@ -82,6 +82,10 @@ inline RenderMoments render_moments(const Scene& scene, bool for_variance = true
     LightSet lights = build_light_set(scene, accel);  // as render() builds them
     const Camera camera = make_camera(scene.camera);
     std::unique_ptr<Integrator> integrator = make_integrator(scene, accel, lights);
+    const PixelFilter filter(scene.film.filter);
+    if (filter.weighted() || scene.film.crop_window != FilmSettings{}.crop_window)
+        ADD_FAILURE() << "render_moments: the moments are of plain means over the full image: weight-1 filters "
+                         "and no crop window";
 
     RenderMoments m;
     m.width = scene.camera.width;
@@ -106,7 +110,7 @@ inline RenderMoments render_moments(const Scene& scene, bool for_variance = true
                     // spread / n then overestimates the error of the mean, and z-tests built on it
                     // are conservative (they lose power, never gain false alarms).
                     Sampler sampler(scene.sampler.type, pixel, i, scene.sampler.seed);
-                    Vec2f film = Vec2f(float(x), float(y)) + sample_filter(scene.film.filter, i, sampler.next_vec2f());
+                    Vec2f film = Vec2f(float(x), float(y)) + filter.sample(i, sampler.next_vec2f()).position;
                     const Ray ray = visit([&](const auto& cam) { return cam.generate_ray(film, sampler); }, camera);
                     Rgb L = integrator->radiance(ray, sampler, counters);
                     if (!L.is_finite()) {

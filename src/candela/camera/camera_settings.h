@@ -1,5 +1,8 @@
 #pragma once
 // The camera of the scene file (DESIGN.md: right-handed, image y downward; docs/SCENE_FORMAT.md).
+#include <array>
+#include <optional>
+
 #include "candela/math/vec.h"
 
 namespace candela {
@@ -11,6 +14,18 @@ enum class CameraType { kPerspective, kOrthographic };
 // Which extent of the image `fov` spans (Mitsuba 3's fov_axis): its width, its height, its
 // diagonal, or the smaller or larger of width and height (pbrt's fov spans the smaller).
 enum class FovAxis { kX, kY, kDiagonal, kSmaller, kLarger };
+
+// The camera frame in world space, given directly (the scene file's camera `transform`) rather than
+// by position, look_at and up: unit axes, right and up across the image, forward the view
+// direction. Their handedness is whatever the transform's is (pbrt-v4's camera space is
+// left-handed: x right, y up, z forward).
+struct CameraBasis {
+    Vec3f position, right, up, forward;
+};
+
+// pbrt-v4's default focaldistance, the default focus_distance of a camera given by a transform
+// (which has no look_at to focus on).
+inline constexpr float kDefaultTransformFocusDistance = 1e6f;
 
 struct CameraSettings {
     CameraType type = CameraType::kPerspective;
@@ -28,6 +43,12 @@ struct CameraSettings {
     // focus_distance 0 stands for the distance from position to look_at.
     float aperture_radius = 0.0f;
     float focus_distance = 0.0f;
+    // When set, the frame (position, look_at and up are then not used).
+    std::optional<CameraBasis> basis;
+    // pbrt-v4's screenwindow: [xmin, xmax, ymin, ymax] on the screen, y up. Perspective: in units
+    // of tan(fov / 2) (fov_axis is then not used); orthographic: in scene units (ortho_height is
+    // then not used). Unset: centred, from fov and fov_axis or ortho_height.
+    std::optional<std::array<float, 4>> screen_window;
 };
 
 }  // namespace candela

@@ -22,7 +22,7 @@ class OrthographicCamera {
   public:
     // Valid settings with ortho_height > 0.
     explicit OrthographicCamera(const CameraSettings& settings)
-        : frame_(settings), screen_(settings, orthographic_half_extents(settings)),
+        : frame_(settings), screen_(settings, orthographic_screen_window(settings)),
           lens_radius_(settings.aperture_radius), focus_distance_(resolved_focus_distance(settings)),
           near_(settings.near) {}
 

@@ -14,7 +14,7 @@ class PerspectiveCamera {
     // The settings must be valid (the scene loader checks them): look_at != position, up not
     // parallel to the view direction, 0 < fov < 180. The lens settings are not read.
     explicit PerspectiveCamera(const CameraSettings& settings)
-        : frame_(settings), screen_(settings, perspective_half_extents(settings)), near_(settings.near),
+        : frame_(settings), screen_(settings, perspective_screen_window(settings)), near_(settings.near),
           width_(settings.width), height_(settings.height) {}
 
     // The ray through continuous film position `film` (pixels); unit direction, starting `near`

@@ -22,7 +22,7 @@ class ThinLensCamera {
   public:
     // Valid settings (PerspectiveCamera's) with aperture_radius > 0.
     explicit ThinLensCamera(const CameraSettings& settings)
-        : frame_(settings), screen_(settings, perspective_half_extents(settings)),
+        : frame_(settings), screen_(settings, perspective_screen_window(settings)),
           lens_radius_(settings.aperture_radius), focus_distance_(resolved_focus_distance(settings)),
           near_(settings.near) {}
 

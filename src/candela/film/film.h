@@ -3,6 +3,10 @@
 // one thread only, in sample-index order, so the sums (and the image) do not depend on how many
 // threads render or how tiles are scheduled (DESIGN.md, "Determinism"). Checkpoints save and
 // restore the sums exactly, so a resumed render goes on adding to the same doubles.
+//
+// With a filter whose samples have weights (film/pixel_filter.h: pbrt-v4's tabulated filters) the
+// film also sums each pixel's weights and resolves to sum / weight sum (pbrt-v4's RGBFilm). Films
+// of weight-1 filters keep no weights: their weight sum is the sample count, exactly.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -22,12 +26,22 @@ inline void add_to_sum(PixelSum& sum, const Rgb& value) {
     sum[2] += double(value.b);
 }
 
+// Adds value * weight to a running sum, the product in double.
+inline void add_weighted_to_sum(PixelSum& sum, const Rgb& value, float weight) {
+    const double w = double(weight);
+    sum[0] += double(value.r) * w;
+    sum[1] += double(value.g) * w;
+    sum[2] += double(value.b) * w;
+}
+
 class Film {
   public:
     Film() = default;  // 0 x 0
-    Film(int width, int height);
-    // A film holding these sums (row-major, width * height of them), e.g. read from a checkpoint.
-    Film(int width, int height, std::vector<PixelSum> sums);
+    // `weighted`: the film keeps per-pixel weight sums (all 0 to start).
+    Film(int width, int height, bool weighted = false);
+    // A film holding these sums (row-major, width * height of them), e.g. read from a checkpoint;
+    // `weights` is empty (an unweighted film) or has one weight sum per pixel.
+    Film(int width, int height, std::vector<PixelSum> sums, std::vector<double> weights = {});
 
     // Adds one sample's radiance to pixel (x, y). Not thread-safe for the same pixel.
     void add_sample(int x, int y, const Rgb& value) { add_to_sum(sums_[index(x, y)], value); }
@@ -37,7 +51,15 @@ class Film {
     // All sums, row-major.
     const std::vector<PixelSum>& sums() const { return sums_; }
 
-    // The mean over `samples_per_pixel` samples, as floats.
+    bool weighted() const { return weighted_; }
+    // The weight sum of pixel (x, y); weighted films only.
+    double& weight(int x, int y) { return weights_[index(x, y)]; }
+    double weight(int x, int y) const { return weights_[index(x, y)]; }
+    // All weight sums, row-major; empty for an unweighted film.
+    const std::vector<double>& weights() const { return weights_; }
+
+    // Unweighted: the mean over `samples_per_pixel` samples; weighted: each sum divided by its
+    // weight sum (0 where that is 0). As floats.
     Image resolve(uint32_t samples_per_pixel) const;
 
     int width() const { return width_; }
@@ -47,6 +69,8 @@ class Film {
     size_t index(int x, int y) const { return size_t(y) * size_t(width_) + size_t(x); }
     int width_ = 0, height_ = 0;
     std::vector<PixelSum> sums_;
+    std::vector<double> weights_;
+    bool weighted_ = false;
 };
 
 }  // namespace candela

@@ -47,6 +47,8 @@ CANDELA_HD Vec2f sample_filter(FilterType type, uint32_t sample_index, Vec2f u) 
             return {subpixel_centre(sx) + sample_tent(u.x, kSubpixelTentRadius),
                     subpixel_centre(sy) + sample_tent(u.y, kSubpixelTentRadius)};
         }
+        default:  // the tabulated filters are PixelFilter's (pixel_filter.h)
+            break;
     }
     return u;
 }
@@ -67,6 +69,8 @@ CANDELA_HD float filter_pdf(FilterType type, Vec2f offset) {
             // The subpixels are independent in x and y and equally likely, so the average of the
             // four 2D tents factors into the product of two 1D averages.
             return smallpt_pdf_1d(offset.x) * smallpt_pdf_1d(offset.y);
+        default:  // the tabulated filters are PixelFilter's (pixel_filter.h)
+            break;
     }
     return 0.0f;
 }
@@ -77,6 +81,8 @@ CANDELA_HD float filter_radius(FilterType type) {
         case FilterType::kTent: return kTentRadius;
         case FilterType::kGaussian: return kGaussianRadius;
         case FilterType::kSmallpt: return 0.25f + kSubpixelTentRadius;  // subpixel centre + tent
+        default:  // the tabulated filters are PixelFilter's (pixel_filter.h)
+            break;
     }
     return 0.0f;
 }

@@ -4,6 +4,9 @@
 // pixels never write to their neighbours (no locks, tiles stay independent) and the pixel value is
 // the filter-weighted average of radiance in expectation.
 //
+// These functions are the scene file's named filters (box, tent, gaussian, smallpt) with their fixed
+// radii; film/pixel_filter.h adds the radius parameters and pbrt-v4's tabulated filters.
+//
 // Positions are in pixels relative to the pixel's top-left corner, x right and y down; the pixel
 // centre is (0.5, 0.5). Filters may reach past the pixel (the tent covers [-0.5, 1.5]^2).
 #include <cstdint>

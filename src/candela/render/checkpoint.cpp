@@ -16,6 +16,7 @@
 #include "candela/core/atomic_file.h"
 #include "candela/core/error.h"
 #include "candela/core/hash64.h"
+#include "candela/render/renderer.h"
 #include "candela/scene/enum_names.h"
 #include "candela/scene/scene.h"
 
@@ -27,9 +28,11 @@ namespace fs = std::filesystem;
 
 constexpr std::string_view kMagic = "CNDLCKPT";
 constexpr uint32_t kFormatVersion = 1;
+constexpr uint32_t kWeightedFormatVersion = 2;  // with weight sums
 constexpr uint32_t kMaxString = 64;
 constexpr int kMaxSide = 32768;  // the scene loader's limit
 constexpr size_t kBytesPerPixel = 3 * 8;
+constexpr size_t kWeightedBytesPerPixel = 4 * 8;
 // The longest header: magic, format version, three names of kMaxString bytes, hash, seed, width,
 // height, samples done, dropped samples.
 constexpr uint64_t kMaxHeaderBytes = 8 + 4 + 3 * (4 + kMaxString) + 8 + 8 + 4 + 4 + 4 + 8;
@@ -131,8 +134,9 @@ RenderIdentity render_identity(const Scene& scene, uint64_t content_hash) {
     id.sampler = sampler_type_name(scene.sampler.type);
     id.content_hash = content_hash;
     id.seed = scene.sampler.seed;
-    id.width = scene.camera.width;
-    id.height = scene.camera.height;
+    const PixelBounds bounds = render_pixel_bounds(scene);
+    id.width = bounds.width();
+    id.height = bounds.height();
     return id;
 }
 
@@ -140,7 +144,7 @@ void write_checkpoint(const fs::path& file, const RenderIdentity& identity, cons
     const Film& film = state.film;
     Writer w;
     w.out.append(kMagic);
-    w.u32(kFormatVersion);
+    w.u32(film.weighted() ? kWeightedFormatVersion : kFormatVersion);
     w.string(identity.candela_version);
     w.string(identity.integrator);
     w.string(identity.sampler);
@@ -165,8 +169,9 @@ void write_checkpoint(const fs::path& file, const RenderIdentity& identity, cons
             put(w.out);
             w.out.clear();
         };
-        for (const PixelSum& sum : film.sums()) {
-            for (double v : sum) w.f64(v);
+        for (size_t i = 0; i < film.sums().size(); ++i) {
+            for (double v : film.sums()[i]) w.f64(v);
+            if (film.weighted()) w.f64(film.weights()[i]);
             if (w.out.size() >= (1 << 16)) flush();
         }
         flush();
@@ -189,8 +194,11 @@ Checkpoint read_checkpoint(const fs::path& file) {
     }
     Reader r(std::string_view(data).substr(kMagic.size()));
     const uint32_t format = r.u32();
-    if (!r.truncated() && format != kFormatVersion)
-        fail(file, fmt::format("checkpoint format version {}; this candela reads version {}", format, kFormatVersion));
+    if (!r.truncated() && format != kFormatVersion && format != kWeightedFormatVersion)
+        fail(file, fmt::format("checkpoint format version {}; this candela reads versions {} and {}", format,
+                               kFormatVersion, kWeightedFormatVersion));
+    const bool weighted = format == kWeightedFormatVersion;
+    const size_t bytes_per_pixel = weighted ? kWeightedBytesPerPixel : kBytesPerPixel;
     Checkpoint c;
     RenderIdentity& id = c.identity;
     id.candela_version = r.string();
@@ -210,7 +218,7 @@ Checkpoint read_checkpoint(const fs::path& file) {
 
     const size_t pixels = size_t(width) * size_t(height);
     const size_t header = kMagic.size() + r.position();
-    const size_t expected = header + pixels * kBytesPerPixel + 8;
+    const size_t expected = header + pixels * bytes_per_pixel + 8;
     if (size < expected)
         fail(file, fmt::format("truncated checkpoint: {} bytes, a {}x{} checkpoint has {}", size, width, height,
                                expected));
@@ -222,17 +230,19 @@ Checkpoint read_checkpoint(const fs::path& file) {
     if (Reader(std::string_view(data).substr(expected - 8)).u64() != checksum(contents))
         fail(file, "corrupt checkpoint: the checksum does not match its contents (the file was damaged or edited)");
 
-    Reader body(std::string_view(data).substr(header, pixels * kBytesPerPixel));
+    Reader body(std::string_view(data).substr(header, pixels * bytes_per_pixel));
     std::vector<PixelSum> sums(pixels);
+    std::vector<double> weights(weighted ? pixels : 0);
+    auto finite = [&](double v, size_t i) {
+        if (!std::isfinite(v))
+            fail(file, fmt::format("corrupt checkpoint: pixel ({}, {}) has a non-finite sum", i % width, i / width));
+        return v;
+    };
     for (size_t i = 0; i < pixels; ++i) {
-        for (double& v : sums[i]) {
-            v = std::bit_cast<double>(body.u64());
-            if (!std::isfinite(v))
-                fail(file, fmt::format("corrupt checkpoint: pixel ({}, {}) has a non-finite sum", i % width,
-                                       i / width));
-        }
+        for (double& v : sums[i]) v = finite(std::bit_cast<double>(body.u64()), i);
+        if (weighted) weights[i] = finite(std::bit_cast<double>(body.u64()), i);
     }
-    c.state = RenderState{Film(id.width, id.height, std::move(sums)), samples, dropped};
+    c.state = RenderState{Film(id.width, id.height, std::move(sums), std::move(weights)), samples, dropped};
     return c;
 }
 

@@ -2,11 +2,13 @@
 // Checkpoint files: a render's accumulated state, to continue it later (candela render SCENE
 // --resume FILE) with a bit-identical result.
 //
-// Format version 1. Integers are unsigned little-endian; a string is a u32 byte count (at most
+// Format versions 1 and 2: version 2 is written for films with weight sums (film/film.h: the
+// tabulated pixel filters) and differs only in the sums, which then have a fourth value per pixel,
+// its weight sum. Integers are unsigned little-endian; a string is a u32 byte count (at most
 // 64) and its bytes; sums are IEEE 754 binary64, little-endian.
 //
 //   magic            8 bytes  "CNDLCKPT"
-//   format version   u32      1
+//   format version   u32      1, or 2 for a film with weight sums
 //   candela version  string   CANDELA_VERSION of the program that wrote it
 //   integrator       string   its name (path, bsdf, ...)
 //   sampler          string   its name (independent, sobol)
@@ -16,7 +18,8 @@
 //   samples done     u32      per pixel
 //   dropped samples  u64      NaN/Inf samples among them, counted as zero
 //   sums             f64 x 3 x width x height: per pixel, row-major from the top left, r g b,
-//                             exactly the Film's sums
+//                             exactly the Film's sums; version 2: f64 x 4, r g b and the
+//                             pixel's weight sum
 //   checksum         u64      Hash64 (core/hash64.h) of every byte before it
 //
 // Files are written atomically (a temporary file, then a rename), so a crash or a second
@@ -48,7 +51,7 @@ struct Checkpoint {
 };
 
 // The identity of rendering `scene` (after command-line overrides) with this candela;
-// `content_hash` is scene_content_hash(scene).
+// `content_hash` is scene_content_hash(scene). The resolution is the film's: the crop window's.
 RenderIdentity render_identity(const Scene& scene, uint64_t content_hash);
 
 // Writes `state` with `identity` to `file`, atomically. Throws SceneError naming the file when

@@ -17,7 +17,7 @@
 #include "candela/camera/camera.h"
 #include "candela/core/error.h"
 #include "candela/film/film.h"
-#include "candela/film/filter.h"
+#include "candela/film/pixel_filter.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/lights/light_set.h"
 #include "candela/render/integrator.h"
@@ -57,27 +57,35 @@ struct ThreadTally {
 // render_pixels).
 struct SampleContext {
     const Integrator& integrator;
-    int width;
+    int width;  // of the full image
     uint64_t seed;
     SamplerType sampler_type;
-    FilterType filter;
+    const PixelFilter& filter;
+    PixelBounds bounds;  // the film's pixels within the full image (the crop window)
 };
 
-// Camera sample `s` of pixel (x, y), added to the pixel's running sum, or dropped (counted) when
-// it is NaN or Inf. Its random numbers are a pure function of (pixel, s, seed), so the sum is the
-// same whichever thread computes it and however the samples are split into passes. The filter's
-// request comes first, then the camera's lens point if it has a lens (camera_model.h).
-template <CameraModel CameraT>
+// Camera sample `s` of pixel (x, y) of the full image, added to the pixel's running sum (and its
+// weight to the weight sum, for a Weighted filter), or dropped (counted) when it is NaN or Inf: a
+// dropped sample's weight still counts, so it counts as zero as without weights. Its random
+// numbers are a pure function of (pixel, s, seed), so the sum is the same whichever thread
+// computes it and however the samples are split into passes. The filter's request comes first,
+// then the camera's lens point if it has a lens (camera_model.h).
+template <bool Weighted, CameraModel CameraT>
 void take_sample(const SampleContext& c, const CameraT& camera, int x, int y, uint32_t s,
-                 const PixelSampler& pixel_sampler, PixelSum& sum, ThreadTally& tally) {
+                 const PixelSampler& pixel_sampler, PixelSum& sum, double& weight_sum, ThreadTally& tally) {
     Sampler sampler = pixel_sampler.sample(s);
-    Vec2f film_pos = Vec2f(float(x), float(y)) + sample_filter(c.filter, s, sampler.next_vec2f());
+    const FilterSample f = c.filter.sample(s, sampler.next_vec2f());
+    Vec2f film_pos = Vec2f(float(x), float(y)) + f.position;
     Rgb L = c.integrator.radiance(camera.generate_ray(film_pos, sampler), sampler, tally.rays);
+    if constexpr (Weighted) weight_sum += double(f.weight);
     if (!L.is_finite()) {
         ++tally.dropped;
         return;
     }
-    add_to_sum(sum, L);
+    if constexpr (Weighted)
+        add_weighted_to_sum(sum, L, f.weight);
+    else
+        add_to_sum(sum, L);
 }
 
 // A pass's samples [begin, end) for every pixel: each pixel's sum is read from `from`, the pass's
@@ -89,17 +97,25 @@ struct Pass {
     Film* to = nullptr;
 };
 
-// The pass's samples of one tile's pixels, for one kind of camera: the caller dispatches on the
-// camera once per tile, so the sample loop has no camera branch.
-template <CameraModel CameraT>
+// The pass's samples of one tile's pixels, for one kind of camera and filter: the caller
+// dispatches on both once per tile, so the sample loop has no camera or weight branch. Tiles are in
+// film pixels; the camera and the sampler see full-image pixels, so a cropped film's pixels get
+// the rays and random numbers they have in the full image.
+template <bool Weighted, CameraModel CameraT>
 void render_tile(const SampleContext& c, const CameraT& camera, const Tile& tile, const Pass& pass,
                  ThreadTally& tally) {
     for (int y = tile.y0; y < tile.y1; ++y) {
         for (int x = tile.x0; x < tile.x1; ++x) {
+            const int full_x = x + c.bounds.x0, full_y = y + c.bounds.y0;
             PixelSum sum = pass.from->sum(x, y);
-            const PixelSampler pixel_sampler(c.sampler_type, uint64_t(y) * uint64_t(c.width) + uint64_t(x), c.seed);
-            for (uint32_t s = pass.begin; s < pass.end; ++s) take_sample(c, camera, x, y, s, pixel_sampler, sum, tally);
+            double weight_sum = 0.0;
+            if constexpr (Weighted) weight_sum = pass.from->weight(x, y);
+            const PixelSampler pixel_sampler(c.sampler_type,
+                                             uint64_t(full_y) * uint64_t(c.width) + uint64_t(full_x), c.seed);
+            for (uint32_t s = pass.begin; s < pass.end; ++s)
+                take_sample<Weighted>(c, camera, full_x, full_y, s, pixel_sampler, sum, weight_sum, tally);
             pass.to->sum(x, y) = sum;
+            if constexpr (Weighted) pass.to->weight(x, y) = weight_sum;
         }
     }
 }
@@ -159,8 +175,17 @@ LightSet build_light_set(const Scene& scene, const Accelerator& accel) {
     return lights;
 }
 
+PixelBounds render_pixel_bounds(const Scene& scene) {
+    return crop_pixel_bounds(scene.camera.width, scene.camera.height, scene.film.crop_window);
+}
+
+Film make_film(const Scene& scene) {
+    const PixelBounds bounds = render_pixel_bounds(scene);
+    return Film(bounds.width(), bounds.height(), is_tabulated(scene.film.filter.type));
+}
+
 RenderResult render(const Scene& scene, const RenderOptions& options) {
-    return render(scene, options, RenderState{Film(scene.camera.width, scene.camera.height)});
+    return render(scene, options, RenderState{make_film(scene)});
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& options, RenderState start) {
@@ -173,13 +198,23 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
 
     const Camera camera = make_camera(scene.camera);
     std::unique_ptr<Integrator> integrator = make_integrator(scene, accel, lights);
-    const int width = scene.camera.width, height = scene.camera.height;
+    const PixelBounds bounds = render_pixel_bounds(scene);
+    const int width = bounds.width(), height = bounds.height();
+    if (width < 1 || height < 1)
+        throw RenderError("render: the film's crop window covers no pixel of the " + std::to_string(scene.camera.width) +
+                          "x" + std::to_string(scene.camera.height) + " image");
     if (start.film.width() != width || start.film.height() != height)
         throw RenderError("render: the start state is " + std::to_string(start.film.width()) + "x" +
                           std::to_string(start.film.height()) + ", the scene " + std::to_string(width) + "x" +
                           std::to_string(height));
+    const PixelFilter filter(scene.film.filter);
+    if (start.film.weighted() != filter.weighted())
+        throw RenderError(std::string("render: the start state ") +
+                          (start.film.weighted() ? "has" : "lacks") + " the weight sums that the pixel filter " +
+                          (filter.weighted() ? "needs" : "does not use"));
     const auto spp = uint32_t(scene.sampler.spp);
-    const SampleContext context{*integrator, width, scene.sampler.seed, scene.sampler.type, scene.film.filter};
+    const SampleContext context{*integrator, scene.camera.width, scene.sampler.seed, scene.sampler.type, filter,
+                                bounds};
     const uint64_t pixels = uint64_t(width) * uint64_t(height);
 
     RenderState& state = result.state;
@@ -219,7 +254,10 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
                     if (check_stop()) return;
                     const Tile& tile = tiles[t];
                     uint64_t rays_before = tally.rays.total();
-                    visit([&](const auto& cam) { render_tile(context, cam, tile, pass, tally); }, camera);
+                    if (filter.weighted())
+                        visit([&](const auto& cam) { render_tile<true>(context, cam, tile, pass, tally); }, camera);
+                    else
+                        visit([&](const auto& cam) { render_tile<false>(context, cam, tile, pass, tally); }, camera);
                     uint64_t tile_pixels = uint64_t(tile.x1 - tile.x0) * uint64_t(tile.y1 - tile.y0);
                     progress.advance(tile_pixels * n, tally.rays.total() - rays_before);
                 }
@@ -243,7 +281,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
                 abandon = RenderEnd::kDeadline;
                 break;
             }
-            if (next.width() != width || next.height() != height) next = Film(width, height);
+            if (next.width() != width || next.height() != height) next = Film(width, height, filter.weighted());
             const Pass pass{state.samples_done, state.samples_done + n, &state.film, &next};
             const Clock::time_point pass_start = Clock::now();
             run_pass(arena, pass, progress);

@@ -13,6 +13,7 @@
 
 #include "candela/geometry/alpha_cutout.h"
 #include "candela/image/image.h"
+#include "candela/film/film_settings.h"
 #include "candela/render/ray_counters.h"
 #include "candela/render/render_state.h"
 
@@ -74,6 +75,13 @@ LightSet build_light_set(const Scene& scene, const Accelerator& accel);
 // Renders scene.sampler.spp samples per pixel. The image depends only on the scene (incl. its
 // seed), not on threads, tile_size or passes.
 RenderResult render(const Scene& scene, const RenderOptions& options);
+
+// The pixels of the full image (camera resolution) that a render of `scene` computes and writes:
+// the film's crop window.
+PixelBounds render_pixel_bounds(const Scene& scene);
+// The empty film a render of `scene` starts from: the crop window's size, with weight sums when
+// the pixel filter's samples have weights.
+Film make_film(const Scene& scene);
 
 // Continues `start`, a state of the same scene (e.g. read from a checkpoint), up to
 // scene.sampler.spp samples per pixel; when it already has as many or more, renders nothing and

@@ -3,6 +3,7 @@
 // Scene; bad values and keys of the other camera type are located errors.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 
 #include "candela/camera/camera_frame.h"
@@ -100,6 +101,85 @@ TEST(SceneLoaderCamera, FocusDistanceIsReadAndDefaultsToTheDistanceToLookAt) {
     SceneError far = load_error(R"({"camera": {"fov": 170, "aperture_radius": 1, "focus_distance": 1e37}})");
     EXPECT_EQ(far.where().json_pointer, "/camera/focus_distance");
     EXPECT_NE(far.message().find("beyond float range"), std::string::npos);
+}
+
+// pbrt-v4's camera space: at the origin, looking along +z, +y up, image right along +x.
+TEST(SceneLoaderCamera, TransformGivesTheFrameFromCameraSpace) {
+    // A rotation of 90 degrees about y takes +z (forward) to +x and +x (right) to -z; then a move.
+    const Scene s = load_json(R"({"camera": {"transform": [{"rotate": {"axis": [0, 1, 0], "angle": 90}},
+                                                           {"translate": [1, 2, 3]}]}})");
+    ASSERT_TRUE(s.camera.basis.has_value());
+    const CameraFrame f(s.camera);
+    EXPECT_EQ(f.position, Vec3f(1, 2, 3));
+    EXPECT_NEAR(f.forward.x, 1.0f, 1e-6f);
+    EXPECT_NEAR(f.right.z, -1.0f, 1e-6f);
+    EXPECT_NEAR(f.up.y, 1.0f, 1e-6f);
+    EXPECT_FALSE(load_json("{}").camera.basis.has_value());
+}
+
+TEST(SceneLoaderCamera, TransformEqualToALookAtCameraGivesItsFrame) {
+    const Scene a = load_json(R"({"camera": {"position": [1, 2, 3], "look_at": [1, 2, -1]}})");
+    // Columns: right (1, 0, 0), up (0, 1, 0), forward (0, 0, -1), position (1, 2, 3): right-handed
+    // in the world, so det = -1 as a map from pbrt-v4's left-handed camera space.
+    const Scene b = load_json(R"({"camera": {"transform": [{"matrix": [1, 0, 0, 1,  0, 1, 0, 2,  0, 0, -1, 3,
+                                                                       0, 0, 0, 1]}]}})");
+    const CameraFrame fa(a.camera), fb(b.camera);
+    EXPECT_EQ(fa.position, fb.position);
+    EXPECT_EQ(fa.right, fb.right);
+    EXPECT_EQ(fa.up, fb.up);
+    EXPECT_EQ(fa.forward, fb.forward);
+}
+
+TEST(SceneLoaderCamera, TransformKeepsTheMatrixHandednessAndNormalizesAxes) {
+    // pbrt-v4's LookAt from (0, 0, 0) to (0, 0, -1), up +y: its right is cross(up, dir) = -x.
+    const Scene s = load_json(R"({"camera": {"transform": [{"matrix": [-2, 0, 0, 0,  0, 3, 0, 0,  0, 0, -0.5, 0,
+                                                                       0, 0, 0, 1]}]}})");
+    const CameraFrame f(s.camera);
+    EXPECT_EQ(f.right, Vec3f(-1, 0, 0));
+    EXPECT_EQ(f.up, Vec3f(0, 1, 0));
+    EXPECT_EQ(f.forward, Vec3f(0, 0, -1));
+}
+
+TEST(SceneLoaderCamera, TransformFocusesAtPbrtsDefaultDistance) {
+    const Scene s = load_json(R"({"camera": {"transform": [{"translate": [0, 0, 1]}], "aperture_radius": 0.1}})");
+    EXPECT_EQ(resolved_focus_distance(s.camera), 1e6f);
+    const Scene given = load_json(R"({"camera": {"transform": [], "aperture_radius": 0.1, "focus_distance": 3}})");
+    EXPECT_EQ(resolved_focus_distance(given.camera), 3.0f);
+}
+
+TEST(SceneLoaderCamera, TransformAndLookAtTogetherAreAnError) {
+    SceneError e = load_error(R"({"camera": {"transform": [], "look_at": [0, 0, 1]}})");
+    EXPECT_EQ(e.where().json_pointer, "/camera");
+    EXPECT_EQ(e.where().column, 30);  // at the key
+    EXPECT_EQ(e.message(), "\"look_at\" and \"transform\" both place the camera; give one of them");
+    SceneError singular = load_error(R"({"camera": {"transform": [{"scale": [1, 1, 0]}]}})");
+    EXPECT_EQ(singular.where().json_pointer, "/camera/transform/0/scale/2");
+}
+
+TEST(SceneLoaderCamera, ScreenWindowIsRead) {
+    const Scene p = load_json(R"({"camera": {"fov": 60, "screen_window": [-1, 0.5, -0.25, 1]}})");
+    ASSERT_TRUE(p.camera.screen_window.has_value());
+    EXPECT_EQ(*p.camera.screen_window, (std::array<float, 4>{-1, 0.5f, -0.25f, 1}));
+    const Scene o = load_json(R"({"camera": {"type": "orthographic", "screen_window": [-3, 3, -2, 2]}})");
+    EXPECT_EQ(orthographic_screen_window(o.camera).half, Vec2f(3, 2));
+    EXPECT_FALSE(load_json("{}").camera.screen_window.has_value());
+}
+
+TEST(SceneLoaderCamera, BadScreenWindowsAreLocatedErrors) {
+    SceneError order = load_error(R"({"camera": {"screen_window": [1, -1, -1, 1]}})");
+    EXPECT_EQ(order.where().json_pointer, "/camera/screen_window/1");
+    EXPECT_EQ(order.message(), "expected a number > 1 (xmin), got -1");
+    SceneError axis = load_error(R"({"camera": {"screen_window": [-1, 1, -1, 1], "fov_axis": "x"}})");
+    EXPECT_EQ(axis.where().json_pointer, "/camera/fov_axis");
+    EXPECT_NE(axis.message().find("fov_axis chooses the default screen window"), std::string::npos);
+    SceneError both = load_error(R"({"camera": {"type": "orthographic", "height": 2, "screen_window": [-1, 1, -1, 1]}})");
+    EXPECT_EQ(both.where().json_pointer, "/camera/height");
+    EXPECT_EQ(both.message(), "an orthographic camera takes \"height\" or \"screen_window\" (in scene units), not both");
+    SceneError far = load_error(R"({"camera": {"fov": 170, "screen_window": [-1e30, 1e30, -1, 1]}})");
+    EXPECT_EQ(far.where().json_pointer, "/camera/screen_window");
+    EXPECT_NE(far.message().find("beyond float range"), std::string::npos) << far.message();
+    EXPECT_EQ(load_error(R"({"camera": {"screen_window": [-1, 1]}})").message(),
+              "expected an array of 4 numbers [xmin, xmax, ymin, ymax], got [-1, 1]");
 }
 
 }  // namespace

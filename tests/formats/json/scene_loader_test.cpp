@@ -175,7 +175,7 @@ TEST(SceneLoaderCamera, DegenerateFrameIsReportedAtTheKeyGiven) {
 TEST(SceneLoaderFilm, FilterSelectsEachFilter) {
     for (std::string_view name : filter_type_names()) {
         Scene s = load_json(R"({"film": {"filter": ")" + std::string(name) + "\"}}");
-        EXPECT_EQ(filter_type_name(s.film.filter), name);
+        EXPECT_EQ(filter_type_name(s.film.filter.type), name);
     }
     EXPECT_EQ(load_json(R"({"film": {"filter": "tent"}})").film.filter, FilterType::kTent);
 }
@@ -248,8 +248,8 @@ TEST(SceneLoader, UnknownKeysInEverySectionAreErrors) {
     EXPECT_EQ(load_error(R"({"film": {"tone_map": "aces"}})").message(),
               "unknown key \"tone_map\" (did you mean \"tonemap\"?)");
     EXPECT_EQ(load_error(R"({"film": {"sensor": "cie1931"}})").message(),
-              "unknown key \"sensor\"; expected one of: exposure, exposure_time, filter, gamma, iso, tonemap, "
-              "transfer, white_balance");
+              "unknown key \"sensor\"; expected one of: crop_window, exposure, exposure_time, filter, gamma, iso, "
+              "tonemap, transfer, white_balance");
     // A misspelt section is reported before anything that depends on it.
     SceneError e = load_error(R"({"shapes": [{"type": "sphere", "center": [0, 0, 0],
                                               "radius": 1, "material": "m"}],

@@ -109,16 +109,42 @@ E enum_of(std::string_view name, const std::array<std::string_view, N>& names) {
                     perspective ? "\"fov\" (degrees)" : "\"height\" (the image's height in scene units)"));
 }
 
-// The projection: fov and fov_axis for perspective, height for orthographic.
+// screen_window: [xmin, xmax, ymin, ymax], finite, each minimum below its maximum.
+std::array<float, 4> read_screen_window(const JsonCursor& v) {
+    std::vector<JsonCursor> e = v.elements(4, "an array of 4 numbers [xmin, xmax, ymin, ymax]");
+    std::array<float, 4> w{};
+    for (size_t i = 0; i < 4; ++i) w[i] = e[i].number_f();
+    for (size_t axis = 0; axis < 2; ++axis)
+        if (!(w[2 * axis] < w[2 * axis + 1]))
+            e[2 * axis + 1].fail(fmt::format("expected a number > {} ({}min), got {}", w[2 * axis], axis == 0 ? "x" : "y",
+                                             e[2 * axis + 1].describe()));
+    if (!std::isfinite(w[1] - w[0]) || !std::isfinite(w[3] - w[2]))
+        v.fail("the screen window's extent overflows float range");
+    return w;
+}
+
+// The projection: fov and fov_axis for perspective, height for orthographic, or screen_window for
+// either (with fov for perspective, instead of fov_axis or height).
 void read_projection(JsonCursor& c, CameraSettings& camera) {
+    if (auto v = c.get("screen_window")) camera.screen_window = read_screen_window(*v);
     if (camera.type == CameraType::kPerspective) {
         if (c.has("height")) fail_other_type_key(c, "height", camera.type);
         if (auto v = c.get("fov")) camera.fov_degrees = v->number_f(Bounds::open(0, 180));
-        if (auto v = c.get("fov_axis")) camera.fov_axis = enum_of<FovAxis>(v->choice("fov axis", kFovAxes), kFovAxes);
+        if (auto v = c.get("fov_axis")) {
+            if (camera.screen_window)
+                v->fail("fov_axis chooses the default screen window; with \"screen_window\", fov spans its "
+                        "coordinates -1 to 1 (pbrt-v4's screenwindow)");
+            camera.fov_axis = enum_of<FovAxis>(v->choice("fov axis", kFovAxes), kFovAxes);
+        }
         return;
     }
     for (std::string_view key : {"fov", "fov_axis"})
         if (c.has(key)) fail_other_type_key(c, key, camera.type);
+    if (camera.screen_window) {
+        if (auto v = c.get("height"))
+            v->fail("an orthographic camera takes \"height\" or \"screen_window\" (in scene units), not both");
+        return;
+    }
     camera.ortho_height = c.require("height").number_f(Bounds::above(0));
 }
 
@@ -132,11 +158,27 @@ void read_lens(JsonCursor& c, CameraSettings& camera) {
 // the corners of the focus plane (whose length normalize() squares).
 void check_camera_extent(const CameraSettings& camera, JsonCursor& c) {
     const bool orthographic = camera.type == CameraType::kOrthographic;
-    if (orthographic && !std::isfinite(orthographic_half_extents(camera).x + camera.aperture_radius))
-        c.require("height").fail(fmt::format(
-            "the film's width ({} times the aspect ratio, plus the aperture) overflows float range", camera.ortho_height));
+    auto reach = [](const ScreenWindow& w) {
+        return Vec2f(std::abs(w.centre.x) + w.half.x, std::abs(w.centre.y) + w.half.y);
+    };
+    if (orthographic) {
+        const Vec2f r = reach(orthographic_screen_window(camera));
+        if (!std::isfinite(r.x + r.y + camera.aperture_radius)) {
+            if (camera.screen_window)
+                c.require("screen_window").fail("the screen window plus the aperture overflows float range");
+            c.require("height").fail(fmt::format(
+                "the film's width ({} times the aspect ratio, plus the aperture) overflows float range",
+                camera.ortho_height));
+        }
+    }
+    if (!orthographic && camera.screen_window) {
+        // The pinhole's direction to the window's corner, whose length normalize() squares.
+        const Vec2f r = reach(perspective_screen_window(camera));
+        if (!std::isfinite(r.x * r.x + r.y * r.y + 1.0f))
+            c.require("screen_window").fail("the screen window times tan(fov / 2) gives rays beyond float range");
+    }
     if (camera.aperture_radius == 0.0f) return;
-    const Vec2f half = orthographic ? Vec2f(0.0f, 0.0f) : perspective_half_extents(camera);
+    const Vec2f half = orthographic ? Vec2f(0.0f, 0.0f) : reach(perspective_screen_window(camera));
     const float f = resolved_focus_distance(camera), r = camera.aperture_radius;
     const Vec3f corner(f * half.x + r, f * half.y + r, f);
     if (!std::isfinite(dot(corner, corner))) {
@@ -146,9 +188,30 @@ void check_camera_extent(const CameraSettings& camera, JsonCursor& c) {
     }
 }
 
+// The camera `transform`: camera space (at the origin, looking along +z, +y up, image right along
+// +x: pbrt-v4's camera space) to the world. The axes are normalized; their handedness is kept.
+CameraBasis read_camera_basis(const JsonCursor& v) {
+    const Transform t = read_transform(v);
+    const Vec3d position = t.apply_point(Vec3d(0.0));
+    const Vec3d right = t.apply_vector(Vec3d(1, 0, 0)), up = t.apply_vector(Vec3d(0, 1, 0)),
+                forward = t.apply_vector(Vec3d(0, 0, 1));
+    const CameraBasis basis{Vec3f(position), Vec3f(normalize(right)), Vec3f(normalize(up)), Vec3f(normalize(forward))};
+    if (!is_finite(basis.position) || !is_finite(basis.right) || !is_finite(basis.up) || !is_finite(basis.forward))
+        v.fail("the camera transform places the camera beyond float range or flattens an axis");
+    return basis;
+}
+
 void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget& budget) {
     if (auto type = c.get("type"))
         camera.type = enum_of<CameraType>(type->choice("camera type", kCameraTypes), kCameraTypes);
+    if (auto transform = c.get("transform")) {
+        for (std::string_view key : {"position", "look_at", "up"})
+            if (c.has(key))
+                c.document().fail_at_key(c.pointer(), key,
+                                         fmt::format("{} and \"transform\" both place the camera; give one of them",
+                                                     json_quoted(key)));
+        camera.basis = read_camera_basis(*transform);
+    }
     auto position = c.get("position");
     auto look_at = c.get("look_at");
     auto up = c.get("up");
@@ -168,7 +231,7 @@ void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget& budget) {
     if (auto v = c.get("near")) camera.near = v->number_f(Bounds::at_least(0));
     read_lens(c, camera);
     c.reject_unknown_keys();
-    check_camera_frame(camera, c, position, look_at, up);
+    if (!camera.basis) check_camera_frame(camera, c, position, look_at, up);
     check_camera_extent(camera, c);
 }
 
@@ -195,9 +258,9 @@ void read_sensor(JsonCursor& c, FilmSettings& film) {
     }
 }
 
-void read_film(JsonCursor c, FilmSettings& film) {
-    if (auto v = c.get("filter"))
-        film.filter = *parse_filter_type(v->choice("filter", filter_type_names()));
+void read_film(JsonCursor c, FilmSettings& film, const CameraSettings& camera) {
+    if (auto v = c.get("filter")) film.filter = read_filter(*v);
+    if (auto v = c.get("crop_window")) film.crop_window = read_crop_window(*v, camera);
     if (auto v = c.get("tonemap"))
         film.tonemap = *parse_tonemap(v->choice("tone map", tonemap_names()));
     if (auto v = c.get("exposure")) film.exposure = v->number_f(Bounds::closed_open(0, 1));
@@ -294,7 +357,7 @@ Scene load_scene_from_string(std::string_view json, const std::filesystem::path&
     std::optional<JsonCursor> camera = root.get("camera");
     if (camera) read_camera(*camera, scene.camera, budget);
     if (budget.used() == 0) check_film_memory(scene.camera, camera ? *camera : root, budget);
-    if (auto c = root.get("film")) read_film(*c, scene.film);
+    if (auto c = root.get("film")) read_film(*c, scene.film, scene.camera);
     if (auto c = root.get("textures")) read_textures(*c, scene);
     if (auto c = root.get("materials")) read_materials(*c, scene);
     if (auto c = root.get("shapes")) read_shapes(*c, folder, scene, budget);

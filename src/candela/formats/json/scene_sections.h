@@ -1,6 +1,7 @@
 #pragma once
 // The readers for the parts of a scene file, shared by the scene loader's source files (internal to
 // scene/). Each takes a cursor on its part, fills the Scene, and rejects keys it did not read.
+#include <array>
 #include <filesystem>
 #include <string_view>
 #include <utility>
@@ -16,6 +17,13 @@ namespace candela {
 // `transform`: an array of one-key steps (translate, scale, rotate, matrix), the first listed
 // applied first.
 Transform read_transform(const JsonCursor& steps);
+
+// `film.filter`: a name (box, tent, gaussian, smallpt) or an object {"type": ..., parameters}.
+FilterSettings read_filter(JsonCursor filter);
+
+// `film.crop_window`: [x0, x1, y0, y1], fractions of the camera's resolution; it must cover at least
+// one pixel of it.
+std::array<float, 4> read_crop_window(const JsonCursor& crop, const CameraSettings& camera);
 
 // `textures`: name -> texture, read before the materials that name them. A texture may name
 // textures defined after it (but not itself, through any chain). The image files are read later,
