@@ -88,6 +88,31 @@ INSTANTIATE_TEST_SUITE_P(
                (std::get<1>(param_info.param) == IntegratorType::kPath ? "_path" : "_bsdf");
     });
 
+TEST(EnvironmentFurnace, EqualAreaConstantMapRendersADiffuseSphereAtItsAlbedo) {
+    // An 8 x 8 equal-area map of radiance 1 (not 1 x 1: lookups cross the folded edges and
+    // corners, and sampling goes through the square's distribution) in a rotated frame, around a
+    // diffuse sphere of albedo 1: a convex sphere sees only the sky, so it renders at its albedo,
+    // 1, as the background does.
+    Image map(8, 8);
+    for (Rgb& p : map.pixels) p = Rgb(1.0f);
+    Scene scene = sphere_under_sky(make_diffuse(Rgb(1.0f)), map, 16, 64);
+    scene.environment->mapping = EnvironmentMapping::kEqualArea;
+    scene.environment->to_world = Transform::rotate(Vec3d(1.0, 0.5, -0.3), 0.9);
+    test::RenderMoments r = test::render_moments(scene);
+    EXPECT_EQ(r.dropped, 0u);
+    const int block = 2;
+    const long tests = 3L * (16 / block) * (16 / block);
+    test::ZTestFamily family(test::sidak_critical_z(test::kRenderTestAlpha, tests));
+    for (int y = 0; y < 16; y += block)
+        for (int x = 0; x < 16; x += block)
+            for (int c = 0; c < 3; ++c) {
+                test::BlockEstimate e = test::block_estimate(r, x, y, block, c);
+                family.add(e.mean - 1.0, e.variance + kRoundingSigma * kRoundingSigma, x, y, c);
+            }
+    EXPECT_TRUE(family.passed()) << family.summary();
+    EXPECT_GT(r.variance_of_mean(8, 8, 0), 0.0);  // the sphere is in the test, not only the sky
+}
+
 // Mean red value of the image's columns [x0, x1).
 double column_mean(const Image& img, int x0, int x1) {
     double sum = 0.0;

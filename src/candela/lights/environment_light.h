@@ -19,6 +19,8 @@
 namespace candela {
 
 enum class EnvironmentSampling { kImportance, kUniform };
+enum class EnvironmentMapping { kEquirectangular, kEqualArea };
+enum class EnvironmentFilter { kBilinear, kPoint };
 
 struct EnvironmentSample {
     Vec3f wi;          // world direction towards the light (unit)
@@ -28,8 +30,10 @@ struct EnvironmentSample {
 
 class EnvironmentLight {
   public:
-    EnvironmentLight(const Image& radiance, float scale, const Transform& to_world,
-                     EnvironmentSampling sampling);
+    // An equal-area map must be square.
+    EnvironmentLight(const Image& radiance, float scale, const Transform& to_world, EnvironmentSampling sampling,
+                     EnvironmentMapping mapping = EnvironmentMapping::kEquirectangular,
+                     EnvironmentFilter filter = EnvironmentFilter::kBilinear);
 
     // Radiance arriving from world direction w (unit), i.e. travelling along -w; scale applied.
     Rgb radiance(const Vec3f& w) const;
@@ -46,8 +50,10 @@ class EnvironmentLight {
   private:
     // The direction of the light's frame towards world direction w, normalised.
     Vec3f to_light(const Vec3f& w) const;
-    // The bilinearly interpolated map at light-frame direction d (unit), scale not applied.
+    // The map at light-frame direction d (unit), scale not applied.
     Rgb lookup(const Vec3f& d) const;
+    // The equal-area map's mean and sampling tables (the constructor's part for that mapping).
+    void init_equal_area();
     // pdf() for a light-frame direction d (unit).
     float pdf_local(const Vec3f& d) const;
 
@@ -56,8 +62,18 @@ class EnvironmentLight {
     Transform to_world_;
     Transform to_light_;  // to_world_'s inverse
     EnvironmentSampling sampling_ = EnvironmentSampling::kImportance;
+    EnvironmentMapping mapping_ = EnvironmentMapping::kEquirectangular;
+    EnvironmentFilter filter_ = EnvironmentFilter::kBilinear;
     Distribution2D distribution_;  // over (u, v); empty with uniform sampling
     double mean_luminance_ = 0.0;  // over the sphere, solid-angle weighted, scale not applied
 };
+
+// The illuminance (luminance-weighted irradiance, scale 1) that `map`, looked up as the light
+// looks it up, gives a surface facing the light frame's up direction: +Z for the equal-area map
+// (pbrt-v4's convention for its infinite light's `illuminance`), +Y for the equirectangular one.
+// A 1x1 map (a constant) gives exactly pi x its luminance; larger maps are integrated by the
+// midpoint rule on a grid of at least 1024 x 1024 points (each texel split evenly), so the
+// value is the rendered map's to about 1e-5. 0 when the upper hemisphere is black.
+double environment_up_illuminance(const Image& map, EnvironmentMapping mapping, EnvironmentFilter filter);
 
 }  // namespace candela

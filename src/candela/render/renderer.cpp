@@ -138,7 +138,7 @@ AlphaCutouts alpha_cutouts(const Scene& scene) {
 LightSet build_light_set(const Scene& scene, const Accelerator& accel) {
     std::optional<EnvironmentLight> environment;
     if (const auto& env = scene.environment)
-        environment.emplace(env->radiance, env->scale, env->to_world, env->sampling);
+        environment.emplace(env->radiance, env->scale, env->to_world, env->sampling, env->mapping, env->filter);
     // The environment's and the directional lights' power need the scene's size: its bounding
     // sphere (pbrt-v4's Bounds3::BoundingSphere: centre and half diagonal).
     Bounds3f bounds = accel.bounds();

@@ -25,12 +25,15 @@
 
 namespace candela {
 
-// The `environment` light: an equirectangular radiance map (1x1 for a constant colour).
+// The `environment` light: a radiance map (1x1 for a constant colour), equirectangular or
+// equal-area (square); `scale` includes the factor that `illuminance` asks for.
 struct EnvironmentSettings {
     Image radiance;
     float scale = 1.0f;
     Transform to_world;  // rotates the light's frame into the world
     EnvironmentSampling sampling = EnvironmentSampling::kImportance;
+    EnvironmentMapping mapping = EnvironmentMapping::kEquirectangular;
+    EnvironmentFilter filter = EnvironmentFilter::kBilinear;
 };
 
 // An image file that textures read, loaded once however many textures name it (the loader

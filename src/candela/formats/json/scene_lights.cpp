@@ -6,6 +6,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,9 +22,12 @@ namespace {
 
 constexpr std::array<std::string_view, 4> kLightTypes = {"environment", "point", "spot", "directional"};
 constexpr std::array<std::string_view, 2> kEnvironmentSamplingNames = {"importance", "uniform"};
+constexpr std::array<std::string_view, 2> kEnvironmentMappingNames = {"equal_area", "equirectangular"};
+constexpr std::array<std::string_view, 2> kEnvironmentFilterNames = {"bilinear", "point"};
 
 Image read_environment_image(const JsonCursor& file, const std::filesystem::path& folder,
-                             std::vector<std::string>& warnings, MemoryBudget& budget) {
+                             EnvironmentMapping mapping, std::vector<std::string>& warnings,
+                             MemoryBudget& budget) {
     std::string extension = std::filesystem::path(file.string()).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
@@ -39,6 +43,12 @@ Image read_environment_image(const JsonCursor& file, const std::filesystem::path
                                      fmt::format("environment image {} ({}x{})", json_quoted(file.string()),
                                                  image.width, image.height)))
         file.fail(*refused);
+    if (mapping == EnvironmentMapping::kEqualArea) {
+        if (image.width != image.height)
+            file.fail(fmt::format("environment image {} is {}x{}; an equal_area map must be square",
+                                  json_quoted(file.string()), image.width, image.height));
+        return image;
+    }
     // Any size maps onto the sphere, but one that is not 2:1 stretches its texels (and is often
     // not an equirectangular map at all, e.g. a cube cross): worth a word, not a failure.
     if (image.width != 2 * image.height) {
@@ -68,13 +78,40 @@ EnvironmentSettings read_environment(JsonCursor c, const std::filesystem::path& 
                            ? EnvironmentSampling::kUniform
                            : EnvironmentSampling::kImportance;
     }
+    if (auto v = c.get("mapping")) {
+        env.mapping = v->choice("environment mapping", kEnvironmentMappingNames) == "equal_area"
+                          ? EnvironmentMapping::kEqualArea
+                          : EnvironmentMapping::kEquirectangular;
+    }
+    if (auto v = c.get("filter")) {
+        env.filter = v->choice("environment filter", kEnvironmentFilterNames) == "point" ? EnvironmentFilter::kPoint
+                                                                                        : EnvironmentFilter::kBilinear;
+    }
+    std::optional<JsonCursor> illuminance = c.get("illuminance");
+    std::optional<float> target;
+    if (illuminance) target = illuminance->number_f(Bounds::above(0));
     std::optional<JsonCursor> file = c.get("file");
     if (!file) {
         env.radiance = Image(1, 1);
         env.radiance.at(0, 0) = c.get("color")->colour(Bounds::at_least(0));
     }
     c.reject_unknown_keys();
-    if (file) env.radiance = read_environment_image(*file, folder, warnings, budget);
+    if (file) env.radiance = read_environment_image(*file, folder, env.mapping, warnings, budget);
+    if (target) {
+        // pbrt-v4's infinite-light `illuminance`: the map is scaled so that a surface facing the
+        // light frame's up direction receives that illuminance (on top of `scale`).
+        double up = environment_up_illuminance(env.radiance, env.mapping, env.filter);
+        if (!(up > 0.0))
+            illuminance->fail(fmt::format("the environment gives no light to a surface facing its up direction "
+                                          "({}), so no scale can make its illuminance {}",
+                                          env.mapping == EnvironmentMapping::kEqualArea ? "+z" : "+y",
+                                          static_cast<double>(*target)));
+        double scale = static_cast<double>(env.scale) * static_cast<double>(*target) / up;
+        if (!(scale <= static_cast<double>(std::numeric_limits<float>::max())))
+            illuminance->fail(fmt::format("the scale for illuminance {} is {:g}, beyond a 32-bit float",
+                                          static_cast<double>(*target), scale));
+        env.scale = static_cast<float>(scale);
+    }
     return env;
 }
 
