@@ -88,7 +88,7 @@ INSTANTIATE_TEST_SUITE_P(
                (std::get<1>(param_info.param) == IntegratorType::kPath ? "_path" : "_bsdf");
     });
 
-TEST(EnvironmentFurnace, EqualAreaConstantMapRendersADiffuseSphereAtItsAlbedo) {
+TEST(EqualAreaEnvironmentRender, ConstantMapRendersADiffuseSphereAtItsAlbedo) {
     // An 8 x 8 equal-area map of radiance 1 (not 1 x 1: lookups cross the folded edges and
     // corners, and sampling goes through the square's distribution) in a rotated frame, around a
     // diffuse sphere of albedo 1: a convex sphere sees only the sky, so it renders at its albedo,
@@ -136,6 +136,46 @@ TEST(EnvironmentOrientation, SunAtQuarterULightsThePlusXSideAndRotationMovesIt) 
     scene.environment->to_world = Transform::rotate(Vec3d(0, 1, 0), kPiD);
     Image lit_left = render(scene, {.threads = 2}).image;
     EXPECT_GT(column_mean(lit_left, 0, 16), 20.0 * column_mean(lit_left, 16, 32));
+}
+
+TEST(EqualAreaEnvironmentRender, ImportanceAndBsdfSamplingAgreeWithASun) {
+    // A 16 x 16 equal-area sky: blue in the inner diamond (z > 0 in the light's frame), brown in
+    // the corners, a 2 x 2 sun off-centre; the light frame's +z turned to world +y as a pbrt-v4
+    // scene's transform would. A diffuse ball on a ground plane, bilinear and point lookups: the
+    // path tracer's light sampling (and MIS) must agree with BSDF sampling alone.
+    Image map(16, 16);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            float u = std::abs((x + 0.5f) / 8.0f - 1.0f), v = std::abs((y + 0.5f) / 8.0f - 1.0f);
+            map.at(x, y) = u + v < 1.0f ? Rgb(0.3f + 0.04f * float(x), 0.5f, 1.0f) : Rgb(0.2f, 0.15f, 0.1f);
+        }
+    for (int y = 5; y < 7; ++y)
+        for (int x = 9; x < 11; ++x) map.at(x, y) = Rgb(40.0f, 36.0f, 25.0f);
+    for (auto filter : {EnvironmentFilter::kBilinear, EnvironmentFilter::kPoint}) {
+        Scene base = sphere_under_sky(make_diffuse(Rgb(0.7f, 0.6f, 0.5f)), map, 16, 2048);
+        base.environment->mapping = EnvironmentMapping::kEqualArea;
+        base.environment->filter = filter;
+        base.environment->to_world = Transform::rotate(Vec3d(1, 0, 0), -kPiD / 2.0);
+        base.materials.push_back(make_diffuse(Rgb(0.5f)));
+        test::add_quad(base, {-20, -1, 20}, {40, 0, 0}, {0, 0, -40}, 1);
+        base.camera.position = {0, 1.5f, 5};
+        Scene bsdf = base;
+        bsdf.integrator.type = IntegratorType::kBsdf;
+        bsdf.sampler.spp = 8192;
+        bsdf.sampler.seed = 21;
+        test::RenderMoments a = test::render_moments(base), b = test::render_moments(bsdf);
+        EXPECT_EQ(a.dropped + b.dropped, 0u);
+        const int block = 4;
+        const long tests = 2L * 3 * (16 / block) * (16 / block);
+        const double z_critical = test::sidak_critical_z(test::kRenderTestAlpha, tests);
+        test::ZTestFamily pair(z_critical);
+        test::compare_renders(a, b, block, pair);
+        EXPECT_TRUE(pair.passed()) << pair.summary();
+        // Power: against a 5% brighter image the comparison fails broadly.
+        test::ZTestFamily control(z_critical);
+        test::compare_renders(a, b, block, control, 1.05);
+        EXPECT_GE(control.rejected(), test::lit_blocks(b, block) / 4) << control.summary();
+    }
 }
 
 TEST(EnvironmentAgreement, ImportanceUniformAndBsdfSamplingAgree) {
