@@ -130,7 +130,9 @@ const BadInput kBadInputs[] = {
      "expected an integer in [1, 16777216], got \"16\""},
     {"wrong_vector_length.json", kStructure, kError, "", 2, 26, "/camera/position",
      "expected an array of 3 numbers [x, y, z], got [0, 1]"},
-    // --- unknown keys, types and names (21)
+    // --- unknown keys, types and names (22)
+    {"environment_unknown_mapping.json", kUnknownName, kError, "", 3, 52, "/lights/0/mapping",
+     "unknown environment mapping \"octahedral\"; expected one of: equal_area, equirectangular"},
     {"missing_key_near_miss.json", kUnknownName, kError, "", 4, 45, "/shapes/0",
      "unknown key \"radus\" (did you mean \"radius\"?)"},
     {"mix_nested.json", kUnknownName, kError, "", 5, 16, "/materials/coated/lobes/1/type",
@@ -275,7 +277,9 @@ const BadInput kBadInputs[] = {
      "up [0, 2, 0] is parallel to the view direction [0, -1, 0]"},
     {"up_zero.json", kCamera, kError, "", 2, 65, "/camera/up",
      "expected a nonzero up vector, got [0, 0, 0]"},
-    // --- lights that emit nothing, have no area or no direction, or cannot be seen (10)
+    // --- lights that emit nothing, have no area or no direction, or cannot be seen (11)
+    {"environment_illuminance_dark.json", kLight, kError, "", 5, 65, "/lights/0/illuminance",
+     "the environment gives no light to a surface facing its up direction (+y), so no scale can make its illuminance 2"},
     {"bsdf_integrator_point_light.json", kLight, kError, "", 2, 26, "/integrator/type",
      "the bsdf integrator finds light only by hitting it, so it cannot see the point light at /lights/0 (point, spot and directional lights have no area); use path or whitted, or an area light (a shape with emission)"},
     {"directional_zero_direction.json", kLight, kError, "", 4, 51, "/lights/0/direction",
@@ -390,7 +394,9 @@ const BadInput kBadInputs[] = {
      "unknown PLY format \"binary_middle_endian\""},
     {"ply_vertex_count_beyond_index.json", kPly, kError, "ply_vertex_count_beyond_index.ply", 3, 0, "",
      "1000000000000 vertices are more than the 2^32 - 1 a mesh can index"},
-    // --- HDR, EXR and texture images (12)
+    // --- HDR, EXR and texture images (13)
+    {"environment_equal_area_not_square.json", kImage, kError, "", 3, 37, "/lights/0/file",
+     "environment image \"environment_equal_area_not_square.hdr\" is 2x1; an equal_area map must be square"},
     {"environment_not_hdr.json", kImage, kError, "", 3, 37, "/lights/0/file",
      "expected an .hdr or .exr image (linear radiance), got \"sky.png\""},
     {"exr_absurd_size.json", kImage, kError, "exr_absurd_size.exr", 0, 0, "",
