@@ -291,6 +291,8 @@ TEST(SceneLoader, LoadsEverySectionFromAFile) {
     ASSERT_TRUE(s.environment);
     EXPECT_EQ(s.environment->radiance.width, 2);
     EXPECT_EQ(s.environment->scale, 0.5f);
+    EXPECT_EQ(s.environment->mapping, EnvironmentMapping::kEquirectangular);
+    EXPECT_EQ(s.environment->filter, EnvironmentFilter::kPoint);
     ASSERT_EQ(s.delta_lights.size(), 3u);
     EXPECT_TRUE(std::holds_alternative<PointLight>(s.delta_lights[0].light));
     EXPECT_TRUE(std::holds_alternative<SpotLight>(s.delta_lights[1].light));
