@@ -88,16 +88,20 @@ INSTANTIATE_TEST_SUITE_P(
                (std::get<1>(param_info.param) == IntegratorType::kPath ? "_path" : "_bsdf");
     });
 
-TEST(EqualAreaEnvironmentRender, ConstantMapRendersADiffuseSphereAtItsAlbedo) {
+class EqualAreaFurnace : public ::testing::TestWithParam<bool> {};
+
+TEST_P(EqualAreaFurnace, ConstantMapRendersADiffuseSphereAtItsAlbedo) {
     // An 8 x 8 equal-area map of radiance 1 (not 1 x 1: lookups cross the folded edges and
     // corners, and sampling goes through the square's distribution) in a rotated frame, around a
     // diffuse sphere of albedo 1: a convex sphere sees only the sky, so it renders at its albedo,
-    // 1, as the background does.
+    // 1, as the background does. In spectral mode too: the map's texels are uplifted as
+    // illuminants (D65 at luminance 1 for white), which the sensor turns back into 1.
     Image map(8, 8);
     for (Rgb& p : map.pixels) p = Rgb(1.0f);
     Scene scene = sphere_under_sky(make_diffuse(Rgb(1.0f)), map, 16, 64);
     scene.environment->mapping = EnvironmentMapping::kEqualArea;
     scene.environment->to_world = Transform::rotate(Vec3d(1.0, 0.5, -0.3), 0.9);
+    scene.integrator.spectral = GetParam();
     test::RenderMoments r = test::render_moments(scene);
     EXPECT_EQ(r.dropped, 0u);
     const int block = 2;
@@ -112,6 +116,9 @@ TEST(EqualAreaEnvironmentRender, ConstantMapRendersADiffuseSphereAtItsAlbedo) {
     EXPECT_TRUE(family.passed()) << family.summary();
     EXPECT_GT(r.variance_of_mean(8, 8, 0), 0.0);  // the sphere is in the test, not only the sky
 }
+
+INSTANTIATE_TEST_SUITE_P(RgbAndSpectral, EqualAreaFurnace, ::testing::Bool(),
+                         [](const auto& param_info) { return std::string(param_info.param ? "spectral" : "rgb"); });
 
 // Mean red value of the image's columns [x0, x1).
 double column_mean(const Image& img, int x0, int x1) {
