@@ -122,6 +122,8 @@ const BadInput kBadInputs[] = {
      "a transform step has one key; put \"scale\" in a step of its own"},
     {"texture_cycle.json", kStructure, kError, "", 4, 46, "/textures/b/tex1/texture",
      "textures form a cycle: \"a\" -> \"b\" -> \"a\""},
+    {"blend_cycle.json", kStructure, kError, "", 5, 42, "/materials/q/materials/0",
+     "blends form a cycle: \"p\" -> \"q\" -> \"p\""},
     {"two_environments.json", kStructure, kError, "", 4, 5, "/lights/1",
      "a scene has at most one environment light, and /lights/0 is one"},
     {"wrong_type_section.json", kStructure, kError, "", 2, 11, "/film",
@@ -178,6 +180,8 @@ const BadInput kBadInputs[] = {
     // --- numbers: negative, zero, NaN/Inf, beyond range (39)
     {"albedo_out_of_range.json", kNumber, kError, "", 3, 48, "/materials/red/albedo/1",
      "expected a number in [0, 1], got 1.2"},
+    {"blend_amount_out_of_range.json", kNumber, kError, "", 5, 63, "/materials/m/amount",
+     "expected a number in [0, 1], got 1.5"},
     {"alpha_out_of_range.json", kNumber, kError, "", 3, 57, "/materials/leaf/alpha",
      "expected a number in [0, 1], got 1.5"},
     {"aperture_radius_negative.json", kNumber, kError, "", 2, 44, "/camera/aperture_radius",

@@ -52,5 +52,46 @@ TEST(TextureRender, PathTracerShadesWithTheTextureAtEachHit) {
     expect_texture_quarters(image, 1e-5f);
 }
 
+// The quad of textured_quad (normal +z, x from -1 to 1 across the image) with the albedo
+// texture `albedo` (JSON), seen by the albedo view.
+Image albedo_view(const std::string& albedo) {
+    const std::string json = R"({
+      "integrator": {"type": "albedo"},
+      "sampler": {"spp": 1, "seed": 3},
+      "camera": {"position": [0, 0, 2], "look_at": [0, 0, 0], "up": [0, 1, 0],
+                 "fov": 43.6028, "resolution": [8, 8]},
+      "materials": {"m": {"type": "diffuse", "albedo": )" + albedo + R"(}},
+      "shapes": [{"type": "quad", "corner": [-1, -1, 0], "edge1": [2, 0, 0], "edge2": [0, 2, 0],
+                  "material": "m"}],
+      "lights": [{"type": "environment", "color": 1}]})";
+    return render(load_scene_from_string(json, std::filesystem::path(CANDELA_TEST_DATA_DIR) / "scenes" / "inline.json"),
+                  {.threads = 2})
+        .image;
+}
+
+TEST(TextureRender, DirectionMixSeesTheHitsNormal) {
+    // The quad's normal is +z: w = |n . dir| is 1 for dir +z (tex1 everywhere), 0 for dir +x.
+    const Image facing = albedo_view(R"({"type": "directionmix", "tex1": 0.2, "tex2": 0.8, "dir": [0, 0, 1]})");
+    const Image across = albedo_view(R"({"type": "directionmix", "tex1": 0.2, "tex2": 0.8, "dir": [1, 0, 0]})");
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            EXPECT_EQ(facing.at(x, y)[0], 0.2f);
+            EXPECT_EQ(across.at(x, y)[0], 0.8f);
+        }
+}
+
+TEST(TextureRender, SolidCheckerboardSeesTheHitPoint) {
+    // Texture space into the world: (x, y, z) -> (2x, 4y, 4z - 1/2), so a hit (x, y, 0) is at
+    // texture (x/2, y/4, 1/8): cells change at x = 0 and y = 0. Pixel column 2 covers x in
+    // [-0.4, -0.2] (cell -1), column 5 x in [0.2, 0.4] (cell 0); row 2 covers y in [0.2, 0.4]
+    // (cell 0), row 5 y in [-0.4, -0.2] (cell -1); z is in cell 0. color0 where the sum is even.
+    const Image image = albedo_view(R"({"type": "checkerboard", "dimension": 3, "color0": 0.2, "color1": 0.8,
+                                         "transform": [{"scale": [2, 4, 4]}, {"translate": [0, 0, -0.5]}]})");
+    EXPECT_EQ(image.at(2, 5)[0], 0.2f);
+    EXPECT_EQ(image.at(5, 5)[0], 0.8f);
+    EXPECT_EQ(image.at(2, 2)[0], 0.8f);
+    EXPECT_EQ(image.at(5, 2)[0], 0.2f);
+}
+
 }  // namespace
 }  // namespace candela

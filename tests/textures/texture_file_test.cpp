@@ -68,6 +68,23 @@ TEST(TextureFile, LinearColorspaceIsUntouched) {
     EXPECT_EQ(sixteen.texel(1, 0).rgb, Rgb(1.0f));
 }
 
+TEST(TextureFile, GammaColorspaceIsThePowerOfTheValue) {
+    // pbrt-v4's GammaColorEncoding: (v / 255)^gamma, (v / 65535)^gamma for 16 bits.
+    TempDir dir;
+    std::vector<uint16_t> all(256);
+    for (int v = 0; v < 256; ++v) all[size_t(v)] = uint16_t(v);
+    write_test_file(dir / "ramp.png", test::make_png(256, 1, 8, 0, 1, all));
+    const TextureImage eight = read_texture_file(dir / "ramp.png", TextureColorspace::kGamma, 2.2f);
+    for (int v = 0; v < 256; ++v)
+        expect_close(eight.texel(v, 0).rgb.r, std::pow(v / 255.0, double(2.2f)), "byte " + std::to_string(v));
+    const std::vector<uint16_t> samples = {0, 1, 1000, 30000, 65535};
+    write_test_file(dir / "deep.png", test::make_png(int(samples.size()), 1, 16, 0, 1, samples));
+    const TextureImage sixteen = read_texture_file(dir / "deep.png", TextureColorspace::kGamma, 1.8f);
+    for (size_t i = 0; i < samples.size(); ++i)
+        expect_close(sixteen.texel(int(i), 0).rgb.r, std::pow(samples[i] / 65535.0, double(1.8f)),
+                     "sample " + std::to_string(samples[i]));
+}
+
 TEST(TextureFile, RgbKeepsChannelsAndRowOrder) {
     TempDir dir;
     write_test_file(dir / "rgb.png", test::make_png(2, 2, 8, 2, 3, {255, 0, 0, 0, 255, 0, 0, 0, 255, 0, 0, 0}));

@@ -1,18 +1,21 @@
 #pragma once
 // A material: up to Bsdf::kMaxLobes lobes whose values add (see bsdf.h), each described by its
 // parameters (lobe_params.h). The scene file's material types are the constructors below; `mix`
-// concatenates the lobes of others.
+// concatenates the lobes of others. A `blend` (material_blend.h) has no lobes of its own: it
+// names two materials of the scene, one of which shades at each point.
 //
 // Most materials have no textured parameter: their BSDF is the same at every point and is built
 // once (`bsdf`), so the path tracer reads it in place, as before textures existed. A textured
 // material builds its BSDF at each hit from the texture values there (build_bsdf).
 #include <array>
 #include <concepts>
+#include <optional>
 #include <span>
 
 #include "candela/core/check.h"
 #include "candela/materials/bsdf.h"
 #include "candela/materials/lobe_params.h"
+#include "candela/materials/material_blend.h"
 #include "candela/materials/surface_params.h"
 
 namespace candela {
@@ -24,20 +27,24 @@ struct Material {
     // The shading frame needs the surface's parametrization (render/shading_frame.h): some lobe
     // is anisotropic, or `surface` maps the normal. Kept by set_surface and make_material.
     bool needs_shading_geometry = false;
-    // textured || needs_shading_geometry: the one flag the path tracer tests at every vertex.
+    // textured || needs_shading_geometry || blend: the one flag the path tracer tests at every
+    // vertex.
     bool per_hit = false;
     bool anisotropic = false;  // some lobe's x axis must follow the surface's dpdu
     // Some lobe's index of refraction is a spectrum: in spectral mode a path that meets this
     // material keeps only its hero wavelength (SampledWavelengths::terminate_secondary).
     bool dispersive = false;
     SurfaceParams surface;     // normal or bump map, alpha
+    // A blend: which of two other materials shades is chosen at each hit (render/
+    // material_choice.h); bsdf is then empty and surface holds only the alpha.
+    std::optional<MaterialBlend> blend;
 };
 
 // Gives material `m` the surface parameters `s`.
 inline void set_surface(Material& m, const SurfaceParams& s) {
     m.surface = s;
     m.needs_shading_geometry = m.anisotropic || s.perturbs_normal();
-    m.per_hit = m.textured || m.needs_shading_geometry;
+    m.per_hit = m.textured || m.needs_shading_geometry || m.blend.has_value();
 }
 
 // Whether lobe parameters `p` describe an anisotropic lobe: a lobe type says so by an
@@ -129,6 +136,14 @@ inline Material make_mix(std::span<const Material> parts) {
         }
     }
     return make_material(std::span<const LobeParams>(all.data(), n));
+}
+
+// `blend`: part 1 (an index into the scene's materials) with probability `amount`, else part 0.
+inline Material make_blend(uint32_t part0, uint32_t part1, const FloatParam& amount) {
+    Material m;
+    m.blend = MaterialBlend{{part0, part1}, amount};
+    m.per_hit = true;
+    return m;
 }
 
 // The surface colour the `albedo` integrator shows: the sum of the lobes' albedo or tint.

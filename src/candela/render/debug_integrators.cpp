@@ -3,6 +3,7 @@
 #include "candela/geometry/accelerator.h"
 #include "candela/geometry/ray_offset.h"
 #include "candela/math/frame.h"
+#include "candela/render/material_choice.h"
 #include "candela/sampling/warps.h"
 #include "candela/scene/scene.h"
 
@@ -26,9 +27,12 @@ Rgb AlbedoIntegrator::radiance(const Ray& ray, Sampler&, RayCounters& counters) 
     ++counters.camera;
     auto hit = accel_.intersect(ray);
     if (!hit) return Rgb(0.0f);
-    const Material& m = scene_.materials[scene_.shapes[hit->shape_id].material];
+    uint32_t mi = scene_.shapes[hit->shape_id].material;
+    // A blend shows the part that shades at the hit.
+    if (scene_.materials[mi].blend) mi = shading_material_index(scene_, accel_, *hit, ray, mi);
+    const Material& m = scene_.materials[mi];
     // A textured material shows its textures at the hit, as it shades there.
-    if (m.textured) return to_rgb(build_bsdf(m, scene_.textures, TextureContext{accel_.uv(*hit), hit->p}).albedo());
+    if (m.textured) return to_rgb(build_bsdf(m, scene_.textures, TextureContext{accel_.uv(*hit), hit->p, nullptr, hit->ng}).albedo());
     return to_rgb(material_albedo(m));
 }
 

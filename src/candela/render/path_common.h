@@ -7,6 +7,7 @@
 #include "candela/materials/bsdf.h"
 #include "candela/materials/material.h"
 #include "candela/math/frame.h"
+#include "candela/render/material_choice.h"
 #include "candela/render/ray_counters.h"
 #include "candela/render/render_settings.h"
 #include "candela/render/shading_frame.h"
@@ -21,44 +22,56 @@ namespace candela {
 // An untextured material's BSDF is read in place; a textured one is built here from the texture
 // values at the hit (materials/material.h), which needs the hit's surface coordinates. The frame
 // is Frame::from_normal(ns) unless the material maps the normal or has anisotropic lobes; those
-// ask the accelerator for the surface's parametrization (render/shading_frame.h).
+// ask the accelerator for the surface's parametrization (render/shading_frame.h). A blend first
+// chooses the part that shades here (render/material_choice.h).
 struct PathVertex {
     const SurfaceHit& hit;
+    const Material* material;  // the material that shades here: the shape's, or a blend's part
     std::optional<Bsdf> textured_bsdf;  // engaged only for textured materials and in spectral mode
     const Bsdf& bsdf;
     Frame frame;  // z = shading normal, on the geometric normal's side
     Vec3f wo;     // towards where the path came from, local
 
     PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray)
-        : PathVertex(scene, accel, h, ray, scene.materials[scene.shapes[h.shape_id].material]) {}
+        : PathVertex(scene, accel, h, ray, scene.shapes[h.shape_id].material) {}
     // Spectral mode: the BSDF at the path's wavelengths, built at every hit, or for an untextured
     // material read from the path's `cache` when given (built there at its first hit); a
     // dispersive material first keeps only the hero wavelength of `w`.
     PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, SampledWavelengths& w,
                SpectralBsdfCache* cache = nullptr)
-        : PathVertex(scene, accel, h, ray, scene.shapes[h.shape_id].material, w, cache) {}
+        : PathVertex(scene, accel, h, ray, resolve_blend(scene, accel, h, ray, scene.shapes[h.shape_id].material), w,
+                     cache) {}
 
   private:
-    // One flag per vertex for materials without textures, maps or anisotropy (the Cornell box's):
-    // Material::per_hit, tested twice, which the compiler merges on the plain path (+0.07%
-    // instructions in the path loop, where testing textured and needs_shading_geometry cost
-    // +0.8%: docs/ARCHITECTURE.md). A textured, mapped material asks for its uv twice.
-    PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, const Material& m)
+    // One flag per vertex for materials without textures, maps, anisotropy or blends (the Cornell
+    // box's): Material::per_hit, tested twice, which the compiler merges on the plain path
+    // (+0.07% instructions in the path loop, where testing textured and needs_shading_geometry
+    // cost +0.8%: docs/ARCHITECTURE.md). A textured, mapped material asks for its uv twice. A
+    // blend (per_hit too) replaces `material` by its chosen part in per_hit_bsdf, before the
+    // frame is made from it (per_hit_frame takes any material).
+    PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, uint32_t mi)
+        : PathVertex(scene, accel, h, ray, scene.materials[mi], mi) {}
+    PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, const Material& m,
+               uint32_t mi)
         : hit(h),
-          bsdf(m.per_hit ? per_hit_bsdf(scene, accel, m) : m.bsdf),
-          frame(m.per_hit ? per_hit_frame(scene, accel, m, h) : Frame::from_normal(h.ns)),
+          material(&m),
+          bsdf(m.per_hit ? per_hit_bsdf(scene, accel, ray, mi) : m.bsdf),
+          frame(m.per_hit ? per_hit_frame(scene, accel, *material, h) : Frame::from_normal(h.ns)),
           wo(frame.to_local(-ray.d)) {}
 
+    // `mi`: the material that shades, blends already resolved.
     PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, uint32_t mi,
                SampledWavelengths& w, SpectralBsdfCache* cache)
-        : PathVertex(scene, accel, h, ray, scene.materials[mi], mi, w, cache) {}
-    PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, const Material& m,
-               uint32_t mi, SampledWavelengths& w, SpectralBsdfCache* cache)
         : hit(h),
-          bsdf(spectral_bsdf(scene, accel, m, mi, w, cache)),
-          frame(m.per_hit ? per_hit_frame(scene, accel, m, h) : Frame::from_normal(h.ns)),
+          material(&scene.materials[mi]),
+          bsdf(spectral_bsdf(scene, accel, *material, mi, w, cache)),
+          frame(material->per_hit ? per_hit_frame(scene, accel, *material, h) : Frame::from_normal(h.ns)),
           wo(frame.to_local(-ray.d)) {}
 
+    static uint32_t resolve_blend(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray,
+                                  uint32_t mi) {
+        return scene.materials[mi].blend ? shading_material_index(scene, accel, h, ray, mi) : mi;
+    }
     const Bsdf& spectral_bsdf(const Scene& scene, const Accelerator& accel, const Material& m, uint32_t mi,
                               SampledWavelengths& w, SpectralBsdfCache* cache) {
         if (m.dispersive) w.terminate_secondary();
@@ -70,12 +83,13 @@ struct PathVertex {
         }
         const Vec2f uv = m.textured ? accel.uv(hit) : Vec2f();
         Bsdf& b = textured_bsdf.emplace();
-        build_bsdf_into(b, m, scene.textures, TextureContext{uv, hit.p, &w.lambda});
+        build_bsdf_into(b, m, scene.textures, TextureContext{uv, hit.p, &w.lambda, hit.ng});
         return b;
     }
-    const Bsdf& per_hit_bsdf(const Scene& scene, const Accelerator& accel, const Material& m) {
-        if (!m.textured) return m.bsdf;
-        return textured_bsdf.emplace(build_bsdf(m, scene.textures, TextureContext{accel.uv(hit), hit.p}));
+    const Bsdf& per_hit_bsdf(const Scene& scene, const Accelerator& accel, const Ray& ray, uint32_t mi) {
+        if (material->blend) material = &scene.materials[shading_material_index(scene, accel, hit, ray, mi)];
+        if (!material->textured) return material->bsdf;
+        return textured_bsdf.emplace(build_bsdf(*material, scene.textures, TextureContext{accel.uv(hit), hit.p, nullptr, hit.ng}));
     }
     // Out of line, so that the maps' code stays out of the integrators' loops.
     [[gnu::noinline]] static Frame per_hit_frame(const Scene& scene, const Accelerator& accel, const Material& m,

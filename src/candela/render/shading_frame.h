@@ -72,12 +72,12 @@ CANDELA_HD inline Vec3f mapped_normal(const Material& m, const TextureSet& textu
     const SurfaceParams& s = m.surface;
     Vec3f n = hit.ns;
     if (s.normal_map) {
-        const Vec3f c = textures.eval_vector(*s.normal_map, TextureContext{g.uv, hit.p});
+        const Vec3f c = textures.eval_vector(*s.normal_map, TextureContext{g.uv, hit.p, nullptr, hit.ng});
         n = apply_normal_map(n, g, decode_normal_map(c, s.normal_map_convention));
     } else if (s.bump_map) {
         const FloatParam& bump = *s.bump_map;
         n = apply_bump_map(n, g, hit.p, [&](const Vec2f& uv, const Vec3f& p) {
-            return textures.eval(bump, TextureContext{uv, p});
+            return textures.eval(bump, TextureContext{uv, p, nullptr, hit.ng});
         });
     }
     return face_forward(n, hit.ng);

@@ -42,6 +42,7 @@ struct TextureFile {
     std::filesystem::path path;       // the file, relative to the working folder or absolute
     std::filesystem::path canonical;  // what identifies it
     TextureColorspace colorspace = TextureColorspace::kSrgb;  // kLinear for float formats
+    float gamma = 1.0f;               // the exponent of TextureColorspace::kGamma
     std::string name;                 // as the scene file writes it, for messages
     std::string pointer;              // the JSON pointer of the first `file` key naming it
 };

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <climits>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -58,12 +59,15 @@ int copy_texels(const T* in, size_t n, int channels, T opaque, std::vector<T>& o
     return kept;
 }
 
-// The linear value of an encoded v in [0, 1].
-float decode(float v, TextureColorspace colorspace) {
-    return colorspace == TextureColorspace::kSrgb ? decode_srgb(v) : v;
+// The linear value of an encoded v in [0, 1] (kGamma: pbrt-v4's GammaColorEncoding, v^gamma).
+float decode(float v, TextureColorspace colorspace, float gamma) {
+    if (colorspace == TextureColorspace::kSrgb) return decode_srgb(v);
+    if (colorspace == TextureColorspace::kGamma) return std::pow(v, gamma);
+    return v;
 }
 
-TextureImage read_8_bit(const fs::path& file, const stbi_uc* buffer, int length, TextureColorspace colorspace) {
+TextureImage read_8_bit(const fs::path& file, const stbi_uc* buffer, int length, TextureColorspace colorspace,
+                        float gamma) {
     int width = 0, height = 0, channels = 0;
     std::unique_ptr<stbi_uc, StbFree> data(stbi_load_from_memory(buffer, length, &width, &height, &channels, 0));
     if (!data) image_formats::fail(file, "corrupt image: " + stb_reason());
@@ -71,11 +75,12 @@ TextureImage read_8_bit(const fs::path& file, const stbi_uc* buffer, int length,
     image.width = width;
     image.height = height;
     image.channels = copy_texels(data.get(), size_t(width) * size_t(height), channels, stbi_uc(255), image.bytes);
-    for (int v = 0; v < 256; ++v) image.byte_values[size_t(v)] = decode(float(v) / 255.0f, colorspace);
+    for (int v = 0; v < 256; ++v) image.byte_values[size_t(v)] = decode(float(v) / 255.0f, colorspace, gamma);
     return image;
 }
 
-TextureImage read_16_bit(const fs::path& file, const stbi_uc* buffer, int length, TextureColorspace colorspace) {
+TextureImage read_16_bit(const fs::path& file, const stbi_uc* buffer, int length, TextureColorspace colorspace,
+                         float gamma) {
     int width = 0, height = 0, channels = 0;
     std::unique_ptr<stbi_us, StbFree> data(stbi_load_16_from_memory(buffer, length, &width, &height, &channels, 0));
     if (!data) image_formats::fail(file, "corrupt image: " + stb_reason());
@@ -87,7 +92,7 @@ TextureImage read_16_bit(const fs::path& file, const stbi_uc* buffer, int length
     data.reset();
     // One decode per distinct value rather than per sample (the sRGB curve is a power).
     std::vector<float> colour(65536);
-    for (size_t v = 0; v < colour.size(); ++v) colour[v] = decode(float(v) / 65535.0f, colorspace);
+    for (size_t v = 0; v < colour.size(); ++v) colour[v] = decode(float(v) / 65535.0f, colorspace, gamma);
     const bool alpha = image.has_alpha();
     image.floats.resize(kept.size());
     for (size_t i = 0; i < kept.size(); ++i) {
@@ -132,7 +137,7 @@ std::optional<TextureFileHeader> read_texture_file_header(const fs::path& file) 
     return header;
 }
 
-TextureImage read_texture_file(const fs::path& file, TextureColorspace colorspace) {
+TextureImage read_texture_file(const fs::path& file, TextureColorspace colorspace, float gamma) {
     if (is_float_texture_file(file)) return from_linear_image(read_image(file));
     const std::string bytes = image_formats::read_file_contents(file);
     if (bytes.size() > size_t(INT_MAX)) image_formats::fail(file, "image file is too large (over 2 GiB)");
@@ -143,8 +148,8 @@ TextureImage read_texture_file(const fs::path& file, TextureColorspace colorspac
     if (!stbi_info_from_memory(buffer, length, &width, &height, &channels))
         image_formats::fail(file, "not a PNG, JPEG, TGA or BMP image, or a corrupt one: " + stb_reason());
     image_formats::check_dimensions(file, width, height);
-    return stbi_is_16_bit_from_memory(buffer, length) ? read_16_bit(file, buffer, length, colorspace)
-                                                      : read_8_bit(file, buffer, length, colorspace);
+    return stbi_is_16_bit_from_memory(buffer, length) ? read_16_bit(file, buffer, length, colorspace, gamma)
+                                                      : read_8_bit(file, buffer, length, colorspace, gamma);
 }
 
 }  // namespace candela

@@ -10,8 +10,9 @@
 
 namespace candela {
 
-// How an 8- or 16-bit file's values become linear: the sRGB EOTF (IEC 61966-2-1) or v / max.
-enum class TextureColorspace : uint8_t { kSrgb, kLinear };
+// How an 8- or 16-bit file's values become linear: the sRGB EOTF (IEC 61966-2-1), v / max, or
+// (v / max)^gamma (pbrt-v4's encoding "gamma G").
+enum class TextureColorspace : uint8_t { kSrgb, kLinear, kGamma };
 
 // What a texture file's header says, read before its texels so that the memory they take can be
 // checked before it is allocated.
@@ -38,6 +39,7 @@ std::optional<TextureFileHeader> read_texture_file_header(const std::filesystem:
 
 // The file's texels (texture_image.h): 8-bit files as bytes with the colorspace's decoding table,
 // 16-bit and float files as floats; an alpha channel that is opaque everywhere is dropped.
-TextureImage read_texture_file(const std::filesystem::path& file, TextureColorspace colorspace);
+// `gamma`: the exponent of kGamma (unused otherwise).
+TextureImage read_texture_file(const std::filesystem::path& file, TextureColorspace colorspace, float gamma = 1.0f);
 
 }  // namespace candela

@@ -6,6 +6,7 @@
 // A texture's inputs are parameters (texture_param.h): constants, or other textures of the same
 // TextureSet by index, so textures nest. Each kind is a template over the set that holds it, so
 // it can evaluate its inputs without this header depending on texture_set.h.
+#include <cmath>
 #include <concepts>
 #include <cstdint>
 
@@ -144,6 +145,107 @@ struct MixTexture {
         if (tex1.is_textured()) f(tex1.texture);
         if (tex2.is_textured()) f(tex2.texture);
         if (amount.is_textured()) f(amount.texture);
+    }
+};
+
+
+// `bilerp`: the bilinear interpolation of four colours over the transformed (s, t): v00 at
+// (0, 0), v10 at (1, 0), v01 at (0, 1), v11 at (1, 1) (pbrt-v4's bilerp; outside the unit square
+// it extrapolates, as there).
+struct BilerpTexture {
+    Rgb v00{0.0f};
+    Rgb v01{1.0f};
+    Rgb v10{0.0f};
+    Rgb v11{1.0f};
+    UvTransform uv;
+
+    template <class Set>
+    CANDELA_HD Rgb color(const Set&, const TextureContext& ctx) const {
+        const Vec2f st = uv.apply(ctx.uv);
+        const float s = st.x, t = st.y;
+        return v00 * ((1.0f - s) * (1.0f - t)) + v10 * (s * (1.0f - t)) + v01 * ((1.0f - s) * t) + v11 * (s * t);
+    }
+    template <class Set>
+    CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
+        return channel_average(color(set, ctx));
+    }
+    template <class F>
+    void for_each_input(F&&) const {}
+};
+
+// `directionmix`: w tex1 + (1 - w) tex2 with w = |n . dir|, n the surface's geometric normal and
+// `dir` a unit vector in world space (pbrt-v4's directionmix, whose `dir` is in the texture's
+// space: the importer turns it into the world's). As in pbrt-v4, an input whose weight is 0 is
+// not evaluated.
+struct DirectionMixTexture {
+    ColorParam tex1{Rgb(0.0f)};
+    ColorParam tex2{Rgb(1.0f)};
+    Vec3f dir{0.0f, 1.0f, 0.0f};
+
+    CANDELA_HD float weight(const TextureContext& ctx) const { return std::abs(dot(ctx.n, dir)); }
+
+    template <class Set>
+    CANDELA_HD Rgb color(const Set& set, const TextureContext& ctx) const {
+        const float w = weight(ctx);
+        Rgb c(0.0f);
+        if (w != 0.0f) c += set.rgb(tex1, ctx) * w;
+        if (w != 1.0f) c += set.rgb(tex2, ctx) * (1.0f - w);
+        return c;
+    }
+    template <class Set>
+    CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
+        const float w = weight(ctx);
+        float v = 0.0f;
+        if (w != 0.0f) v += set.number(tex1, ctx) * w;
+        if (w != 1.0f) v += set.number(tex2, ctx) * (1.0f - w);
+        return v;
+    }
+    template <class F>
+    void for_each_input(F&& f) const {
+        if (tex1.is_textured()) f(tex1.texture);
+        if (tex2.is_textured()) f(tex2.texture);
+    }
+};
+
+// A point's coordinates in a solid texture's own space, p' = M p + offset (the inverse of the
+// scene file's `transform` of the texture, made at load, in float).
+struct TextureSpace {
+    Vec3f row0{1.0f, 0.0f, 0.0f};
+    Vec3f row1{0.0f, 1.0f, 0.0f};
+    Vec3f row2{0.0f, 0.0f, 1.0f};
+    Vec3f offset{0.0f, 0.0f, 0.0f};
+
+    CANDELA_HD Vec3f apply(const Vec3f& p) const {
+        return Vec3f(dot(row0, p) + offset.x, dot(row1, p) + offset.y, dot(row2, p) + offset.z);
+    }
+};
+
+// `checkerboard` with `dimension` 3: a solid checkerboard of unit cubes in the texture's space,
+// color0 where floor(x) + floor(y) + floor(z) is even, color1 where it is odd (pbrt-v4's 3D
+// checkerboard over its PointTransformMapping, without the antialiasing filter).
+struct Checkerboard3DTexture {
+    ColorParam color0{Rgb(1.0f)};
+    ColorParam color1{Rgb(0.0f)};
+    TextureSpace space;
+
+    // Whether the point lies in a color1 cube (the sum in float, as CheckerboardTexture::odd).
+    CANDELA_HD bool odd(const TextureContext& ctx) const {
+        const Vec3f p = space.apply(ctx.p);
+        return std::fmod(std::floor(p.x) + std::floor(p.y) + std::floor(p.z), 2.0f) != 0.0f;
+    }
+
+    template <class Set>
+    CANDELA_HD Rgb color(const Set& set, const TextureContext& ctx) const {
+        return set.rgb(odd(ctx) ? color1 : color0, ctx);
+    }
+    template <class Set>
+    CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
+        return set.number(odd(ctx) ? color1 : color0, ctx);
+    }
+    template <class F>
+    void for_each_input(F&& f) const {
+        if (color0.is_textured()) f(color0.texture);
+        if (color1.is_textured()) f(color1.texture);
     }
 };
 

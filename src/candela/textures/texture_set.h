@@ -18,7 +18,8 @@
 
 namespace candela {
 
-using Texture = Variant<ConstantTexture, ImageTexture, CheckerboardTexture, ScaleTexture, MixTexture>;
+using Texture = Variant<ConstantTexture, ImageTexture, CheckerboardTexture, ScaleTexture, MixTexture, BilerpTexture,
+                        DirectionMixTexture, Checkerboard3DTexture>;
 
 // The most textures a chain of inputs may hold (a texture with no inputs has depth 1).
 inline constexpr int kMaxTextureDepth = 16;
@@ -136,5 +137,8 @@ static_assert(TextureKind<ImageTexture, TextureSet>);
 static_assert(TextureKind<CheckerboardTexture, TextureSet>);
 static_assert(TextureKind<ScaleTexture, TextureSet>);
 static_assert(TextureKind<MixTexture, TextureSet>);
+static_assert(TextureKind<BilerpTexture, TextureSet>);
+static_assert(TextureKind<DirectionMixTexture, TextureSet>);
+static_assert(TextureKind<Checkerboard3DTexture, TextureSet>);
 
 }  // namespace candela

@@ -238,7 +238,7 @@ TEST(SceneTextures, BadValuesAreLocatedErrors) {
         {R"({"type": "image", "file": "textures/rgb_2x2.png", "filter": "trilinear"})", "/textures/t/filter",
          R"(unknown texture filter "trilinear"; expected one of: bilinear, point)"},
         {R"({"type": "image", "file": "textures/rgb_2x2.png", "colorspace": "rec2020"})", "/textures/t/colorspace",
-         R"(unknown colorspace "rec2020"; expected one of: linear, srgb)"},
+         R"(unknown colorspace "rec2020"; expected one of: gamma, linear, srgb)"},
         {R"({"type": "image", "file": "sky_2x1.hdr", "colorspace": "srgb"})", "/textures/t/colorspace",
          R"("sky_2x1.hdr" holds linear values; "srgb" applies only to 8- and 16-bit images (.png, .jpg, .jpeg, .tga, .bmp))"},
         {R"({"type": "image", "file": "textures/nope.png"})", "/textures/t/file",
@@ -254,7 +254,7 @@ TEST(SceneTextures, BadValuesAreLocatedErrors) {
         {R"({"type": "checkerboard", "color0": {"uv_scale": [2, 2]}})", "/textures/t/color0",
          R"(missing required key "type")"},
         {R"({"type": "noise"})", "/textures/t/type",
-         R"(unknown texture type "noise"; expected one of: checkerboard, constant, image, mix, scale)"},
+         R"(unknown texture type "noise"; expected one of: bilerp, checkerboard, constant, directionmix, image, mix, scale)"},
         {R"({"type": "image"})", "/textures/t", R"(missing required key "file")"},
         {R"({"type": "checkerboard", "colour0": 1})", "/textures/t", R"(unknown key "colour0" (did you mean "color0"?))"},
     };

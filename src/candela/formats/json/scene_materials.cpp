@@ -17,8 +17,8 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 9> kMaterialTypes = {
-    "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "mirror", "mix",
+constexpr std::array<std::string_view, 10> kMaterialTypes = {
+    "blend", "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "mirror", "mix",
     "thin_dielectric", "transmission"};
 // The types a `mix` may combine: every material type but `mix` itself.
 constexpr std::array<std::string_view, 8> kLobeMaterialTypes = {
@@ -201,14 +201,98 @@ Material read_mix(JsonCursor& c, Scene& scene) {
     std::vector<LobeParams> params;
     for (JsonCursor& part : parts) {
         JsonCursor type_cursor = part.require("type");
-        if (type_cursor.is_string() && type_cursor.string() == "mix")
-            type_cursor.fail(fmt::format("a mix cannot contain a mix; expected one of: {}",
+        if (type_cursor.is_string() && (type_cursor.string() == "mix" || type_cursor.string() == "blend"))
+            type_cursor.fail(fmt::format("a mix cannot contain a {}; expected one of: {}", type_cursor.string(),
                                          names_list(kLobeMaterialTypes)));
         std::string_view type = type_cursor.choice("material type", kLobeMaterialTypes);
         params.push_back(read_lobe(part, type, scene));
         part.reject_unknown_keys();
     }
     return make_material(params);
+}
+
+// A blend whose parts are named in the file, to be resolved once every material is read (parts
+// may be defined after the blend).
+struct PendingBlend {
+    uint32_t index;                    // the blend's index in Scene::materials
+    std::vector<JsonCursor> parts;     // its two part names
+};
+
+// `blend`: two materials named in the section and the probability `amount` of the second
+// (pbrt-v4's `mix` material: "materials" and "amount", default 0.5). A blend's normal comes from
+// the part that shades, so it takes no map; it may take the shape's `alpha` (read_surface).
+Material read_blend(JsonCursor& c, Scene& scene, std::vector<PendingBlend>& pending) {
+    std::vector<JsonCursor> parts = c.require("materials").elements(2, "an array of 2 material names");
+    for (const JsonCursor& part : parts)
+        if (!part.is_string()) part.fail_expected("a material name");
+    FloatParam amount{0.5f, kNoTexture, 0.0f, 1.0f};
+    if (auto v = c.get("amount")) amount = read_float_param(*v, scene, Bounds::closed(0, 1));
+    for (std::string_view key : {"normal_map", "normal_map_convention", "bump_map"})
+        if (auto v = c.get(key))
+            v->fail(fmt::format("a blend shades with the normal of the part it chooses; give \"{}\" to its parts",
+                                key));
+    pending.push_back({uint32_t(scene.materials.size()), std::move(parts)});
+    return make_blend(0, 0, amount);
+}
+
+// Gives each pending blend the indices of its parts: names of the section, not the blend itself,
+// not cut out (alpha is the shape's, read from the material the shape names: a part's alpha
+// would never be used), and no chain of parts that leads back to a blend.
+void resolve_blends(const std::vector<PendingBlend>& pending, Scene& scene) {
+    std::vector<std::string_view> names(scene.material_names.begin(), scene.material_names.end());
+    std::vector<const PendingBlend*> pending_of(scene.materials.size(), nullptr);
+    for (const PendingBlend& b : pending) {
+        pending_of[b.index] = &b;
+        for (size_t k = 0; k < 2; ++k) {
+            const std::string name = b.parts[k].string();
+            const auto found = std::find(names.begin(), names.end(), name);
+            if (found == names.end())
+                b.parts[k].fail(fmt::format("unknown material {}; defined materials: {}", json_quoted(name),
+                                            names_list(names)));
+            const uint32_t part = uint32_t(found - names.begin());
+            if (part == b.index) b.parts[k].fail(fmt::format("a blend cannot contain itself ({})", json_quoted(name)));
+            if (scene.materials[part].surface.cuts_out())
+                b.parts[k].fail(fmt::format(
+                    "material {} has alpha < 1: a blend's parts cannot be cut out (give the alpha to the blend)",
+                    json_quoted(name)));
+            scene.materials[b.index].blend->parts[k] = part;
+        }
+    }
+    // Depth-first search for a cycle, with an explicit stack (no file's nesting exhausts the call
+    // stack): 0 unseen, 1 on the current chain, 2 finished.
+    std::vector<uint8_t> state(scene.materials.size(), 0);
+    struct Step {
+        uint32_t blend;
+        size_t next_part;
+    };
+    for (const PendingBlend& root : pending) {
+        if (state[root.index] != 0) continue;
+        std::vector<Step> chain{{root.index, 0}};
+        state[root.index] = 1;
+        while (!chain.empty()) {
+            Step& top = chain.back();
+            if (top.next_part == 2) {
+                state[top.blend] = 2;
+                chain.pop_back();
+                continue;
+            }
+            const size_t k = top.next_part++;
+            const uint32_t part = scene.materials[top.blend].blend->parts[k];
+            if (!scene.materials[part].blend || state[part] == 2) continue;
+            if (state[part] == 1) {
+                std::string cycle;
+                bool on = false;
+                for (const Step& s : chain) {
+                    on = on || s.blend == part;
+                    if (on) cycle += json_quoted(names[s.blend]) + " -> ";
+                }
+                pending_of[top.blend]->parts[k].fail(
+                    fmt::format("blends form a cycle: {}{}", cycle, json_quoted(names[part])));
+            }
+            state[part] = 1;
+            chain.push_back({part, 0});
+        }
+    }
 }
 
 // The keys every material takes (a mix's, not its parts'): normal_map (an image file, a colour
@@ -232,9 +316,11 @@ SurfaceParams read_surface(JsonCursor& c, Scene& scene) {
     return s;
 }
 
-Material read_material(JsonCursor c, Scene& scene) {
+Material read_material(JsonCursor c, Scene& scene, std::vector<PendingBlend>& pending) {
     std::string_view type = c.require("type").choice("material type", kMaterialTypes);
-    Material material = type == "mix" ? read_mix(c, scene) : make_material(read_lobe(c, type, scene));
+    Material material = type == "mix"     ? read_mix(c, scene)
+                        : type == "blend" ? read_blend(c, scene, pending)
+                                          : make_material(read_lobe(c, type, scene));
     set_surface(material, read_surface(c, scene));
     c.reject_unknown_keys();
     return material;
@@ -243,10 +329,12 @@ Material read_material(JsonCursor c, Scene& scene) {
 }  // namespace
 
 void read_materials(JsonCursor materials, Scene& scene) {
+    std::vector<PendingBlend> pending;
     for (auto& [name, c] : materials.members()) {
-        scene.materials.push_back(read_material(c, scene));
+        scene.materials.push_back(read_material(c, scene, pending));
         scene.material_names.push_back(name);
     }
+    resolve_blends(pending, scene);
 }
 
 }  // namespace candela

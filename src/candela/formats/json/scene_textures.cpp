@@ -23,9 +23,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::array<std::string_view, 5> kTextureTypes = {"constant", "image", "checkerboard", "scale",
-                                                           "mix"};
-constexpr std::array<std::string_view, 2> kColorspaceNames = {"srgb", "linear"};
+constexpr std::array<std::string_view, 7> kTextureTypes = {"constant", "image",  "checkerboard", "scale",
+                                                           "mix",      "bilerp", "directionmix"};
+constexpr std::array<std::string_view, 3> kColorspaceNames = {"srgb", "linear", "gamma"};
 constexpr std::array<std::string_view, 3> kWrapNames = {"repeat", "clamp", "black"};
 constexpr std::array<std::string_view, 2> kFilterNames = {"bilinear", "point"};
 
@@ -175,11 +175,26 @@ class TextureReader {
             return t;
         }
         if (type == "image") return read_image_texture(c);
-        if (type == "checkerboard") {
-            CheckerboardTexture t;
-            if (auto v = c.get("color0")) t.color0 = color_param(*v, Bounds{});
-            if (auto v = c.get("color1")) t.color1 = color_param(*v, Bounds{});
+        if (type == "checkerboard") return read_checkerboard(c);
+        if (type == "bilerp") {
+            // pbrt-v4's defaults: 0 along s = 0 ... v00 0, v01 1, v10 0, v11 1.
+            BilerpTexture t;
+            if (auto v = c.get("v00")) t.v00 = v->colour(Bounds{});
+            if (auto v = c.get("v01")) t.v01 = v->colour(Bounds{});
+            if (auto v = c.get("v10")) t.v10 = v->colour(Bounds{});
+            if (auto v = c.get("v11")) t.v11 = v->colour(Bounds{});
             t.uv = read_uv_transform(c);
+            return t;
+        }
+        if (type == "directionmix") {
+            DirectionMixTexture t;
+            if (auto v = c.get("tex1")) t.tex1 = color_param(*v, Bounds{});
+            if (auto v = c.get("tex2")) t.tex2 = color_param(*v, Bounds{});
+            if (auto v = c.get("dir")) {
+                const Vec3d d = v->vec3();
+                if (!(length(d) > 0.0)) v->fail("expected a direction, got the zero vector");
+                t.dir = Vec3f(normalize(d));
+            }
             return t;
         }
         if (type == "scale") {
@@ -192,6 +207,41 @@ class TextureReader {
         if (auto v = c.get("tex1")) t.tex1 = color_param(*v, Bounds{});
         if (auto v = c.get("tex2")) t.tex2 = color_param(*v, Bounds{});
         if (auto v = c.get("amount")) t.amount = float_param(*v, Bounds::closed(0, 1));
+        return t;
+    }
+
+    // `checkerboard`: over the surface's (s, t) (`dimension` 2, pbrt-v4's default), or with
+    // `dimension` 3 over the hit point in the texture's own space: `transform` (default none)
+    // takes that space into the world, as pbrt-v4's CTM at its Texture directive does.
+    Texture read_checkerboard(JsonCursor& c) {
+        ColorParam color0{Rgb(1.0f)}, color1{Rgb(0.0f)};
+        if (auto v = c.get("color0")) color0 = color_param(*v, Bounds{});
+        if (auto v = c.get("color1")) color1 = color_param(*v, Bounds{});
+        int dimension = 2;
+        if (auto v = c.get("dimension")) {
+            dimension = int(v->integer(Bounds::closed(2, 3)));
+        }
+        if (dimension == 2) {
+            if (auto v = c.get("transform")) v->fail("a transform is for a checkerboard of dimension 3");
+            CheckerboardTexture t;
+            t.color0 = color0;
+            t.color1 = color1;
+            t.uv = read_uv_transform(c);
+            return t;
+        }
+        for (std::string_view key : {"uv_scale", "uv_offset"})
+            if (auto v = c.get(key))
+                v->fail(fmt::format("\"{}\" is for a checkerboard of dimension 2 (over uv); dimension 3 takes "
+                                    "\"transform\"",
+                                    key));
+        Checkerboard3DTexture t;
+        t.color0 = color0;
+        t.color1 = color1;
+        if (auto v = c.get("transform")) {
+            const Transform::Matrix m = read_transform(*v).inverse().matrix();
+            auto row = [&](int i) { return Vec3f(Vec3d(m[i][0], m[i][1], m[i][2])); };
+            t.space = TextureSpace{row(0), row(1), row(2), Vec3f(Vec3d(m[0][3], m[1][3], m[2][3]))};
+        }
         return t;
     }
 
@@ -211,6 +261,7 @@ class TextureReader {
         ImageTexture t;
         JsonCursor file = c.require("file");
         std::optional<JsonCursor> colorspace = c.get("colorspace");
+        std::optional<JsonCursor> gamma_key = c.get("gamma");
         if (auto v = c.get("wrap")) {
             const std::string_view wrap = v->choice("wrap mode", kWrapNames);
             t.wrap = wrap == "clamp" ? TextureWrap::kClamp : wrap == "black" ? TextureWrap::kBlack : TextureWrap::kRepeat;
@@ -221,37 +272,52 @@ class TextureReader {
         t.uv = read_uv_transform(c);
         if (auto v = c.get("scale")) t.scale = v->number_f(Bounds::at_least(0));
         if (auto v = c.get("invert")) t.invert = v->boolean();
-        t.image = image_index(file, colorspace);
+        t.image = image_index(file, colorspace, TextureColorspace::kSrgb, gamma_key);
         return t;
     }
 
     // The index in scene.textures' images of the file `file` names in `colorspace` (default
     // `fallback`; float formats are linear), listing it in scene.texture_files when new.
+    // `gamma_key`: the exponent of colorspace "gamma" (pbrt-v4's encoding "gamma G"), needed
+    // there and nowhere else.
     uint32_t image_index(const JsonCursor& file, const std::optional<JsonCursor>& colorspace_key,
-                         TextureColorspace fallback = TextureColorspace::kSrgb) {
+                         TextureColorspace fallback = TextureColorspace::kSrgb,
+                         const std::optional<JsonCursor>& gamma_key = std::nullopt) {
         const fs::path path = referenced_file(file, scene_.file.parent_path(), "texture image");
         if (!is_texture_file_extension(path))
             file.fail(fmt::format("expected an image file ({}), got {}", texture_file_extensions(),
                                   json_quoted(file.string())));
         TextureColorspace colorspace = fallback;
-        if (colorspace_key)
-            colorspace = colorspace_key->choice("colorspace", kColorspaceNames) == "linear" ? TextureColorspace::kLinear
-                                                                                         : TextureColorspace::kSrgb;
+        if (colorspace_key) {
+            const std::string_view name = colorspace_key->choice("colorspace", kColorspaceNames);
+            colorspace = name == "linear"  ? TextureColorspace::kLinear
+                         : name == "gamma" ? TextureColorspace::kGamma
+                                           : TextureColorspace::kSrgb;
+        }
+        float gamma = 1.0f;
+        if (colorspace == TextureColorspace::kGamma) {
+            if (!gamma_key) colorspace_key->fail("colorspace \"gamma\" needs a \"gamma\" exponent, e.g. \"gamma\": 2.2");
+            gamma = gamma_key->number_f(Bounds::above(0));
+        } else if (gamma_key) {
+            gamma_key->fail("\"gamma\" is the exponent of \"colorspace\": \"gamma\"");
+        }
         if (is_float_texture_file(path)) {
-            if (colorspace_key && colorspace == TextureColorspace::kSrgb)
-                colorspace_key->fail(fmt::format("{} holds linear values; \"srgb\" applies only to "
+            if (colorspace_key && colorspace != TextureColorspace::kLinear)
+                colorspace_key->fail(fmt::format("{} holds linear values; {} applies only to "
                                                  "8- and 16-bit images (.png, .jpg, .jpeg, .tga, .bmp)",
-                                                 json_quoted(file.string())));
+                                                 json_quoted(file.string()), json_quoted(colorspace_key->string())));
             colorspace = TextureColorspace::kLinear;
+            gamma = 1.0f;
         }
         std::error_code ec;
         fs::path canonical = fs::canonical(path, ec);
         if (ec) file.fail(fmt::format("cannot resolve texture image {}: {}", json_quoted(file.string()), ec.message()));
         for (size_t i = 0; i < scene_.texture_files.size(); ++i) {
             const TextureFile& known = scene_.texture_files[i];
-            if (known.canonical == canonical && known.colorspace == colorspace) return uint32_t(i);
+            if (known.canonical == canonical && known.colorspace == colorspace && known.gamma == gamma)
+                return uint32_t(i);
         }
-        scene_.texture_files.push_back({path, std::move(canonical), colorspace, file.string(), file.pointer()});
+        scene_.texture_files.push_back({path, std::move(canonical), colorspace, gamma, file.string(), file.pointer()});
         return scene_.textures.add_image(TextureImage{});
     }
 
@@ -301,7 +367,7 @@ void load_texture_images(Scene& scene, const JsonDocument& document, MemoryBudge
                                                 header->channels, header->bytes_per_channel),
                    header->width, header->height);
         TextureImage image =
-            load_referenced(document, file.pointer, [&] { return read_texture_file(file.path, file.colorspace); });
+            load_referenced(document, file.pointer, [&] { return read_texture_file(file.path, file.colorspace, file.gamma); });
         if (!header) charge(image.memory_bytes(), 0, image.width, image.height);
         scene.textures.set_image(uint32_t(i), std::move(image));
     }
