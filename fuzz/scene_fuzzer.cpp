@@ -18,6 +18,10 @@ namespace {
 // the camera and sampler usable.
 void require_valid_scene(const Scene& scene) {
     require(scene.material_names.size() == scene.materials.size(), "one name per material");
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        if (const auto& blend = scene.materials[i].blend)
+            for (uint32_t part : blend->parts)
+                require(part < scene.materials.size() && part != i, "blend parts defined, not the blend itself");
     for (const Shape& shape : scene.shapes) {
         require(shape.material < scene.materials.size(), "shape materials defined");
         const size_t count = shape.kind == ShapeKind::kMesh     ? scene.meshes.size()
