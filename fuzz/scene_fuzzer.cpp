@@ -30,6 +30,18 @@ void require_valid_scene(const Scene& scene) {
         require(shape.index < count, "shape geometry defined");
         require(shape.emission.is_finite(), "finite emission");
     }
+    require(scene.object_names.size() == scene.objects.size(), "one name per object");
+    for (const ObjectShapes& object : scene.objects) {
+        require(size_t(object.first_shape) + object.shape_count <= scene.shapes.size(), "object shapes defined");
+        for (uint32_t k = 0; k < object.shape_count; ++k)
+            require(scene.shapes[object.first_shape + k].emission.is_black(), "objects do not emit");
+    }
+    for (const Instance& instance : scene.instances) {
+        require(instance.object < scene.objects.size(), "instance objects defined");
+        for (const AffineMap* map : {&instance.to_world, &instance.to_object})
+            for (const auto& row : map->m)
+                for (float v : row) require(std::isfinite(v), "finite instance matrices");
+    }
     for (const TriangleMesh& mesh : scene.meshes) {
         require_valid_mesh(mesh);
         for (const Vec3f& p : mesh.positions) require(is_finite(p), "finite vertex positions");

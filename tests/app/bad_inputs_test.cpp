@@ -87,7 +87,7 @@ const BadInput kBadInputs[] = {
      "duplicate key \"film\""},
     {"deep_nesting_unclosed.json", kDeepNesting, kError, "", 1, 100001, "",
      "JSON syntax error while parsing value - unexpected end of input"},
-    // --- wrong types and shapes of values (20)
+    // --- wrong types and shapes of values (24)
     {"boolean_for_number.json", kStructure, kError, "", 2, 21, "/camera/fov",
      "expected a number in (0, 180), got true"},
     {"coated_conductor_reflectance_and_eta.json", kStructure, kError, "", 3, 61, "/materials/copper/conductor_eta",
@@ -132,7 +132,11 @@ const BadInput kBadInputs[] = {
      "expected an integer in [1, 16777216], got \"16\""},
     {"wrong_vector_length.json", kStructure, kError, "", 2, 26, "/camera/position",
      "expected an array of 3 numbers [x, y, z], got [0, 1]"},
-    // --- unknown keys, types and names (22)
+    {"object_shape_emission.json", kStructure, kError, "", 5, 83, "/objects/lamp/shapes/0",
+     "the shapes of object \"lamp\" cannot emit: instances are not lights"},
+    {"object_nested_instance.json", kStructure, kError, "", 5, 35, "/objects/grove/shapes/0/type",
+     "object \"grove\" cannot hold an instance: objects do not nest"},
+    // --- unknown keys, types and names (23)
     {"environment_unknown_mapping.json", kUnknownName, kError, "", 3, 52, "/lights/0/mapping",
      "unknown environment mapping \"octahedral\"; expected one of: equal_area, equirectangular"},
     {"missing_key_near_miss.json", kUnknownName, kError, "", 4, 45, "/shapes/0",
@@ -172,9 +176,11 @@ const BadInput kBadInputs[] = {
     {"unknown_metal.json", kUnknownName, kError, "", 3, 44, "/materials/gold/metal",
      "unknown metal \"Gold\"; expected one of: Ag, Al, Au, Cr, Cu, CuZn, Fe, Ti"},
     {"unknown_shape_type.json", kUnknownName, kError, "", 4, 14, "/shapes/0/type",
-     "unknown shape type \"shpere\"; expected one of: disk, mesh, quad, sphere"},
+     "unknown shape type \"shpere\"; expected one of: disk, instance, mesh, quad, sphere"},
     {"unknown_top_level_key.json", kUnknownName, kError, "", 2, 3, "",
-     "unknown key \"renderer\"; expected one of: camera, film, integrator, lights, materials, sampler, shapes, textures"},
+     "unknown key \"renderer\"; expected one of: camera, film, integrator, lights, materials, objects, sampler, shapes, textures"},
+    {"instance_unknown_object.json", kUnknownName, kError, "", 5, 36, "/shapes/0/object",
+     "unknown object \"tre\" (did you mean \"tree\"?)"},
     {"unknown_texture.json", kUnknownName, kError, "", 3, 64, "/materials/m/albedo/texture",
      "unknown texture \"wod\"; defined textures: wood"},
     // --- numbers: negative, zero, NaN/Inf, beyond range (39)

@@ -250,8 +250,9 @@ RTCRay to_embree(const Ray& ray) {
 }  // namespace
 
 struct Accelerator::Impl {
-    // Per Embree geometry id (= shape id), its mesh, sphere or disk (exactly one is set): one
-    // load from a hit to its data.
+    // Per shape id (= top-level Embree geometry id), its mesh, sphere or disk (exactly one is
+    // set): one load from a hit to its data. The shapes of objects have entries too, found
+    // through their instances; all instances share one more entry, with none set.
     struct Geometry {
         const TriangleMesh* mesh = nullptr;
         const Sphere* sphere = nullptr;
@@ -261,18 +262,54 @@ struct Accelerator::Impl {
         std::vector<Vec3f> face_normals;
     };
     std::vector<Geometry> geometries;
+    // Per shape id, whether it is a shape of an object, whose hits come in object space: apart
+    // from `geometries`, whose entries stay 48 bytes (an index the hot path computes with a shift).
+    std::vector<bool> in_object;
+    uint32_t shape_count = 0;  // the first instance's top-level id, and the instances' entry
+    std::span<const ObjectShapes> objects;
+    std::span<const Instance> instances;
     // The cut-out shapes' filter data, in a vector reserved before any is attached: Embree keeps
     // pointers to the elements.
     std::vector<CutoutShape> cutouts;
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
+    std::vector<RTCScene> object_scenes;  // one per object, which its instances share
 
     ~Impl() {
         if (scene) rtcReleaseScene(scene);
+        for (RTCScene s : object_scenes) rtcReleaseScene(s);
         if (device) rtcReleaseDevice(device);
     }
 
-    void attach_mesh(const TriangleMesh& mesh, unsigned id, const CutoutShape* cutout) {
+    RTCScene new_scene() {
+        RTCScene s = rtcNewScene(device);
+        // ROBUST: no traversal shortcuts that can miss hits at shared edges.
+        rtcSetSceneFlags(s, RTC_SCENE_FLAG_ROBUST);
+        rtcSetSceneBuildQuality(s, RTC_BUILD_QUALITY_HIGH);
+        return s;
+    }
+
+    // Shape `id` as Embree geometry `embree_id` of `target` (the world, or its object's scene).
+    void attach_shape(unsigned id, RTCScene target, unsigned embree_id, const CutoutShape* cutout) {
+        const Geometry& g = geometries[id];
+        if (g.mesh)
+            attach_mesh(*g.mesh, target, embree_id, cutout);
+        else if (g.sphere)
+            attach_sphere(*g.sphere, target, embree_id, cutout);
+        else
+            attach_disk(*g.disk, target, embree_id, cutout);
+    }
+
+    // Instance j: its object's scene placed by the transform, which Embree keeps in float.
+    void attach_instance(uint32_t j) {
+        const Instance& instance = instances[j];
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(g, object_scenes[instance.object]);
+        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, &instance.to_world.m[0][0]);
+        commit_and_attach(g, scene, shape_count + j);
+    }
+
+    void attach_mesh(const TriangleMesh& mesh, RTCScene target, unsigned id, const CutoutShape* cutout) {
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
         // Embree copies into its own buffers, which it pads for its SIMD loads.
         auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -290,11 +327,11 @@ struct Accelerator::Impl {
             rtcSetGeometryIntersectFilterFunction(g, mesh_cutout_filter);
             rtcSetGeometryOccludedFilterFunction(g, mesh_cutout_filter);
         }
-        commit_and_attach(g, id);
+        commit_and_attach(g, target, id);
     }
 
     // Opaque spheres keep the Sphere as user data (one load fewer per test than the cutout's).
-    void attach_sphere(const Sphere& sphere, unsigned id, const CutoutShape* cutout) {
+    void attach_sphere(const Sphere& sphere, RTCScene target, unsigned id, const CutoutShape* cutout) {
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(g, 1);
         if (cutout) {
@@ -308,10 +345,10 @@ struct Accelerator::Impl {
             rtcSetGeometryIntersectFunction(g, sphere_intersect);
             rtcSetGeometryOccludedFunction(g, sphere_occluded);
         }
-        commit_and_attach(g, id);
+        commit_and_attach(g, target, id);
     }
 
-    void attach_disk(const Disk& disk, unsigned id, const CutoutShape* cutout) {
+    void attach_disk(const Disk& disk, RTCScene target, unsigned id, const CutoutShape* cutout) {
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(g, 1);
         if (cutout) {
@@ -325,12 +362,12 @@ struct Accelerator::Impl {
             rtcSetGeometryIntersectFunction(g, disk_intersect);
             rtcSetGeometryOccludedFunction(g, disk_occluded);
         }
-        commit_and_attach(g, id);
+        commit_and_attach(g, target, id);
     }
 
-    void commit_and_attach(RTCGeometry g, unsigned id) {
+    void commit_and_attach(RTCGeometry g, RTCScene target, unsigned id) {
         rtcCommitGeometry(g);
-        rtcAttachGeometryByID(scene, g, id);
+        rtcAttachGeometryByID(target, g, id);
         rtcReleaseGeometry(g);
         check_embree(device, "build a shape");
     }
@@ -402,20 +439,60 @@ struct Accelerator::Impl {
         h.b = Vec2f(0.0f, 0.0f);
     }
 
-    // A hit on user geometry (a sphere or a disk), off the triangles' path.
-    static void make_user_hit(const RTCRayHit& rh, const Ray& ray, const Geometry& g, SurfaceHit& h) {
+    // A hit on user geometry (a sphere or a disk) or through an instance, off the triangles' path.
+    void make_user_hit(const RTCRayHit& rh, const Ray& ray, const Geometry& g, SurfaceHit& h) const {
         if (g.sphere)
             make_sphere_hit(rh, ray, *g.sphere, h);
-        else
+        else if (g.disk)
             make_disk_hit(rh, ray, *g.disk, h);
+        else
+            make_instance_hit(rh, ray, h);
+    }
+
+    // A hit through an instance: made in object space as the shape's own hits are, then moved to
+    // the world (instance.h). Embree leaves the direction unnormalized in object space, so the ray
+    // parameter t is the same in both.
+    [[gnu::noinline]] void make_instance_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit& h) const {
+        const uint32_t index = rh.hit.instID[0] - shape_count;
+        const Instance& instance = instances[index];
+        const uint32_t id = objects[instance.object].first_shape + rh.hit.geomID;
+        const Geometry& shape = geometries[id];
+        if (shape.mesh) {
+            make_triangle_hit(rh, shape, h);
+        } else {
+            const AffineMap& m = instance.to_object;
+            const Ray local{Vec3f(m.apply_point(Vec3d(ray.o))), Vec3f(m.apply_vector(Vec3d(ray.d))), ray.tmin,
+                            ray.tmax};
+            if (shape.sphere)
+                make_sphere_hit(rh, local, *shape.sphere, h);
+            else
+                make_disk_hit(rh, local, *shape.disk, h);
+        }
+        h.shape_id = id;
+        h.instance = index;
+        hit_to_world(instance, h);
+    }
+
+    // A hit's point in its shape's space: the object's, for a shape reached through an instance.
+    Vec3d shape_point(const SurfaceHit& hit) const {
+        return in_object[hit.shape_id] ? instances[hit.instance].to_object.apply_point(Vec3d(hit.p)) : Vec3d(hit.p);
     }
 };
 
 Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
-                         std::span<const Disk> disks, std::span<const Shape> shapes, AlphaCutouts cutouts)
+                         std::span<const Disk> disks, std::span<const Shape> shapes, AlphaCutouts cutouts,
+                         Instancing instancing)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
-    m.geometries.resize(shapes.size());
+    m.geometries.resize(shapes.size() + (instancing.instances.empty() ? 0 : 1));
+    m.shape_count = static_cast<uint32_t>(shapes.size());
+    m.in_object.assign(shapes.size(), false);
+    m.objects = instancing.objects;
+    m.instances = instancing.instances;
+    for (const ObjectShapes& object : instancing.objects) {
+        CANDELA_CHECK(size_t(object.first_shape) + object.shape_count <= shapes.size());
+        for (uint32_t k = 0; k < object.shape_count; ++k) m.in_object[object.first_shape + k] = true;
+    }
     for (size_t id = 0; id < shapes.size(); ++id) {
         const uint32_t index = shapes[id].index;
         // A disk shape given to the constructor without disks would read past the span.
@@ -436,25 +513,36 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
     }
     m.device = rtcNewDevice(nullptr);
     if (!m.device) throw RenderError("cannot create the Embree device");
-    m.scene = rtcNewScene(m.device);
-    // ROBUST: no traversal shortcuts that can miss hits at shared edges.
-    rtcSetSceneFlags(m.scene, RTC_SCENE_FLAG_ROBUST);
-    rtcSetSceneBuildQuality(m.scene, RTC_BUILD_QUALITY_HIGH);
+    m.scene = m.new_scene();
     m.cutouts.reserve(shapes.size());
-    for (unsigned id = 0; id < shapes.size(); ++id) {
+    auto cutout_of = [&](unsigned id) -> const CutoutShape* {
+        if (!cutouts.cuts(id)) return nullptr;
         const Impl::Geometry& g = m.geometries[id];
-        const CutoutShape* cutout = nullptr;
-        if (cutouts.cuts(id)) {
-            const FloatParam& alpha = cutouts.shape_alpha[id];
-            CANDELA_CHECK(!alpha.is_textured() || cutouts.textures);
-            cutout = &m.cutouts.emplace_back(CutoutShape{g.mesh, g.sphere, g.disk, alpha, cutouts.textures, id});
-        }
-        if (g.mesh)
-            m.attach_mesh(*g.mesh, id, cutout);
-        else if (g.sphere)
-            m.attach_sphere(*g.sphere, id, cutout);
-        else
-            m.attach_disk(*g.disk, id, cutout);
+        const FloatParam& alpha = cutouts.shape_alpha[id];
+        CANDELA_CHECK(!alpha.is_textured() || cutouts.textures);
+        return &m.cutouts.emplace_back(CutoutShape{g.mesh, g.sphere, g.disk, alpha, cutouts.textures, id});
+    };
+    // Each object once, its shapes numbered from 0 in its own scene (compact ids: Embree sizes a
+    // scene's geometry table by the largest); an object no instance places is left empty.
+    std::vector<bool> placed(instancing.objects.size(), false);
+    for (const Instance& instance : instancing.instances) {
+        CANDELA_CHECK(instance.object < instancing.objects.size());
+        placed[instance.object] = true;
+    }
+    for (size_t k = 0; k < instancing.objects.size(); ++k) {
+        const ObjectShapes& object = instancing.objects[k];
+        RTCScene s = m.object_scenes.emplace_back(m.new_scene());
+        if (!placed[k]) continue;
+        for (uint32_t i = 0; i < object.shape_count; ++i)
+            m.attach_shape(object.first_shape + i, s, i, cutout_of(object.first_shape + i));
+        rtcCommitScene(s);
+        check_embree(m.device, "build an object");
+    }
+    for (unsigned id = 0; id < shapes.size(); ++id)
+        if (!m.in_object[id]) m.attach_shape(id, m.scene, id, cutout_of(id));
+    for (uint32_t j = 0; j < instancing.instances.size(); ++j) {
+        // An empty object has nothing to hit (and an empty Embree scene no bounds to place).
+        if (instancing.objects[instancing.instances[j].object].shape_count > 0) m.attach_instance(j);
     }
     rtcCommitScene(m.scene);
     check_embree(m.device, "build the scene");
@@ -474,10 +562,12 @@ std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
     if (RayObserver* o = g_ray_observer.load(std::memory_order_relaxed)) [[unlikely]]
         o->observe(ray, false, rh.hit.geomID != RTC_INVALID_GEOMETRY_ID);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return result;
-    const Impl::Geometry& g = impl_->geometries[rh.hit.geomID];
-    // One test on the triangles' path, as before disks existed.
+    // A hit through an instance is found by the instance's id (a select, not a branch), which
+    // leads to make_user_hit: one test on the triangles' path, as before disks and instances.
+    const Impl::Geometry& g =
+        impl_->geometries[rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? impl_->shape_count : rh.hit.geomID];
     if (g.mesh == nullptr)
-        Impl::make_user_hit(rh, ray, g, result.emplace());
+        impl_->make_user_hit(rh, ray, g, result.emplace());
     else
         Impl::make_triangle_hit(rh, g, result.emplace());
     return result;
@@ -485,26 +575,40 @@ std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
 
 Vec2f Accelerator::uv(const SurfaceHit& hit) const {
     const Impl::Geometry& g = impl_->geometries[hit.shape_id];
-    if (g.sphere) return sphere_uv((Vec3d(hit.p) - g.sphere->center) / g.sphere->radius);
-    if (g.disk) return disk_uv(*g.disk, Vec3d(hit.p));
+    if (g.sphere) return sphere_uv((impl_->shape_point(hit) - g.sphere->center) / g.sphere->radius);
+    if (g.disk) return disk_uv(*g.disk, impl_->shape_point(hit));
     return mesh_uv(*g.mesh, hit.prim_id, hit.b);
 }
 
 ShadingGeometry Accelerator::shading(const SurfaceHit& hit) const {
     const Impl::Geometry& g = impl_->geometries[hit.shape_id];
+    const Instance* instance = impl_->in_object[hit.shape_id] ? &impl_->instances[hit.instance] : nullptr;
     if (g.sphere) {
-        const Vec3d v = Vec3d(hit.p) - g.sphere->center;
-        return sphere_shading_geometry(v / length(v), g.sphere->radius, g.sphere->reverse_orientation);
+        const Vec3d v = impl_->shape_point(hit) - g.sphere->center;
+        const Vec3d n = v / length(v);
+        const ShadingGeometry s = sphere_shading_geometry(n, g.sphere->radius, g.sphere->reverse_orientation);
+        return instance ? shading_to_world(*instance, s, Vec3f(g.sphere->reverse_orientation ? -n : n)) : s;
     }
-    if (g.disk) return disk_shading_geometry(*g.disk, Vec3d(hit.p));
+    if (g.disk) {
+        const ShadingGeometry s = disk_shading_geometry(*g.disk, impl_->shape_point(hit));
+        return instance ? shading_to_world(*instance, s, Vec3f(g.disk->normal)) : s;
+    }
     const TriangleMesh& mesh = *g.mesh;
     const uint32_t* v = &mesh.indices[3 * size_t(hit.prim_id)];
-    const Vec3f p[3] = {mesh.positions[v[0]], mesh.positions[v[1]], mesh.positions[v[2]]};
+    Vec3f p[3] = {mesh.positions[v[0]], mesh.positions[v[1]], mesh.positions[v[2]]};
     Vec2f uvs[3];
     Vec3f normals[3];
     for (int k = 0; k < 3; ++k) {
         if (!mesh.uvs.empty()) uvs[k] = mesh.uvs[v[k]];
         if (!mesh.normals.empty()) normals[k] = mesh.normals[v[k]];
+    }
+    // An instanced triangle in the world, as transform_mesh would have placed it.
+    if (instance) {
+        for (int k = 0; k < 3; ++k) {
+            p[k] = Vec3f(instance->to_world.apply_point(Vec3d(p[k])));
+            if (!mesh.normals.empty())
+                normals[k] = normalize(Vec3f(instance->to_object.apply_transposed(Vec3d(normals[k]))));
+        }
     }
     return triangle_shading_geometry(p, mesh.uvs.empty() ? nullptr : uvs, mesh.normals.empty() ? nullptr : normals,
                                      hit.b, hit.ng);

@@ -2,8 +2,10 @@
 // Ray traversal: one Embree 3 scene over all shapes. Triangle meshes are native Embree triangles;
 // spheres and disks are user geometry with candela's precise intersection (sphere_intersection.h,
 // disk_intersection.h). Shape i
-// of the scene is Embree geometry i, so hits name the shape directly. Embree stays out of this
-// header so that only accelerator.cpp compiles against it.
+// of the scene is Embree geometry i, so hits name the shape directly. Objects (instance.h) are
+// Embree scenes of their own, built once, and instance j is the top-level Embree instance geometry
+// shapes.size() + j; a hit through it names the object's shape and the instance. Embree stays out
+// of this header so that only accelerator.cpp compiles against it.
 #include <memory>
 #include <optional>
 #include <span>
@@ -11,6 +13,7 @@
 
 #include "candela/geometry/alpha_cutout.h"
 #include "candela/geometry/disk.h"
+#include "candela/geometry/instance.h"
 #include "candela/geometry/shading_geometry.h"
 #include "candela/geometry/shape.h"
 #include "candela/geometry/sphere.h"
@@ -48,9 +51,11 @@ inline constexpr size_t kMaxTrianglesWithNormalTable = size_t(1) << 16;
 class Accelerator {
   public:
     // The spans must outlive the accelerator: hits read vertex data from them. Shapes that
-    // `cutouts` cuts out let rays through where their alpha says (alpha_cutout.h).
+    // `cutouts` cuts out let rays through where their alpha says (alpha_cutout.h). The shapes of
+    // `instancing`'s objects are in object space and in the world only through its instances.
     Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
-                std::span<const Disk> disks, std::span<const Shape> shapes, AlphaCutouts cutouts = {});
+                std::span<const Disk> disks, std::span<const Shape> shapes, AlphaCutouts cutouts = {},
+                Instancing instancing = {});
     // A scene without disks.
     Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
                 std::span<const Shape> shapes, AlphaCutouts cutouts = {})

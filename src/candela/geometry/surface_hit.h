@@ -1,5 +1,5 @@
 #pragma once
-// What a ray hit, in world space.
+// What a ray hit, in world space (a hit on an instanced object too: geometry/instance.h).
 #include <cstdint>
 
 #include "candela/math/ray.h"
@@ -19,6 +19,8 @@ struct SurfaceHit {
                        // most hits never need it, and a sphere's costs an atan2 and an acos
     uint32_t shape_id = 0;
     uint32_t prim_id = 0;  // triangle index within the mesh; 0 for spheres and disks
+    uint32_t instance = 0; // for a shape of an object (geometry/instance.h), which the ray met
+                           // through an instance: that instance's index; 0 for other shapes
 
     // True when the ray came from the front side.
     bool front_face(const Vec3f& ray_dir) const { return dot(ray_dir, ng) < 0.0f; }

@@ -191,7 +191,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
 RenderResult render(const Scene& scene, const RenderOptions& options, RenderState start) {
     RenderResult result;
     Clock::time_point build_start = Clock::now();
-    Accelerator accel(scene.meshes, scene.spheres, scene.disks, scene.shapes, alpha_cutouts(scene));
+    Accelerator accel(scene.meshes, scene.spheres, scene.disks, scene.shapes, alpha_cutouts(scene),
+                      Instancing{scene.objects, scene.instances});
 
     LightSet lights = build_light_set(scene, accel);
     result.stats.build_seconds = seconds_since(build_start);

@@ -29,6 +29,9 @@ uint64_t film_memory_bytes(int width, int height);
 // A triangle mesh as rendered: its arrays, Embree's copies and BVH, and the light tables it
 // gets if it emits.
 uint64_t mesh_memory_bytes(uint64_t vertices, uint64_t triangles, bool normals, bool uvs);
+// An instance of an object (geometry/instance.h): its transform and Embree's instance record, and
+// its share of the top-level BVH; the object's shapes are counted once, as any shape.
+uint64_t instance_memory_bytes();
 // What loading a mesh file needs besides the mesh itself (the OBJ reader's tables), freed after.
 uint64_t mesh_loading_memory_bytes(uint64_t vertices, uint64_t corners);
 // An environment map of width x height texels: the image, the light's copy and its sampling tables.

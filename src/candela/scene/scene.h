@@ -10,6 +10,7 @@
 #include "candela/camera/camera_settings.h"
 #include "candela/film/film_settings.h"
 #include "candela/geometry/disk.h"
+#include "candela/geometry/instance.h"
 #include "candela/geometry/shape.h"
 #include "candela/geometry/sphere.h"
 #include "candela/geometry/triangle_mesh.h"
@@ -76,7 +77,12 @@ struct Scene {
     std::vector<TriangleMesh> meshes;
     std::vector<Sphere> spheres;
     std::vector<Disk> disks;
-    std::vector<Shape> shapes;
+    std::vector<Shape> shapes;  // in the world, except those of objects
+    // Instancing (geometry/instance.h): each object a run of `shapes` in object space, without
+    // emission; each instance an object placed by a transform. Empty in most scenes.
+    std::vector<ObjectShapes> objects;
+    std::vector<std::string> object_names;  // parallel to objects
+    std::vector<Instance> instances;
     std::optional<EnvironmentSettings> environment;
     std::vector<DeltaLightSettings> delta_lights;
     // Problems that do not stop loading (e.g. an environment map that is not 2:1), one line each,

@@ -22,8 +22,8 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 8> kSections = {"integrator", "sampler",   "camera", "film",
-                                                       "textures",   "materials", "shapes", "lights"};
+constexpr std::array<std::string_view, 9> kSections = {"integrator", "sampler", "camera",  "film",  "textures",
+                                                       "materials",  "objects", "shapes", "lights"};
 // In the order of CameraType and FovAxis (camera_settings.h).
 constexpr std::array<std::string_view, 2> kCameraTypes = {"perspective", "orthographic"};
 constexpr std::array<std::string_view, 5> kFovAxes = {"x", "y", "diagonal", "smaller", "larger"};
@@ -360,7 +360,9 @@ Scene load_scene_from_string(std::string_view json, const std::filesystem::path&
     if (auto c = root.get("film")) read_film(*c, scene.film, scene.camera);
     if (auto c = root.get("textures")) read_textures(*c, scene);
     if (auto c = root.get("materials")) read_materials(*c, scene);
-    if (auto c = root.get("shapes")) read_shapes(*c, folder, scene, budget);
+    std::vector<ObjectBounds> objects;
+    if (auto c = root.get("objects")) objects = read_objects(*c, folder, scene, budget);
+    if (auto c = root.get("shapes")) read_shapes(*c, ShapeSection{folder, std::nullopt, nullptr, objects}, scene, budget);
     if (auto c = root.get("lights")) read_lights(*c, folder, scene, budget);
     load_texture_images(scene, document, budget);
     warn_if_unlit(scene);

@@ -3,10 +3,16 @@
 // scene/). Each takes a cursor on its part, fills the Scene, and rejects keys it did not read.
 #include <array>
 #include <filesystem>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "candela/core/error.h"
+#include "candela/math/constants.h"
 #include "candela/math/transform.h"
 #include "candela/formats/json/json_cursor.h"
 #include "candela/scene/memory_budget.h"
@@ -50,10 +56,39 @@ FloatParam read_float_param(const JsonCursor& c, Scene& scene, const Bounds& bou
 // a colour parameter in [0, 1] as read_color_param reads it.
 ColorParam read_normal_map_param(const JsonCursor& c, Scene& scene);
 
-// `shapes`: meshes (loaded relative to `folder`, each charged to `budget` before it is built),
-// quads, spheres and disks; needs the materials.
-void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene,
-                 MemoryBudget& budget);
+// The world-space box around an object's shapes (in object space), as they are read: an instance
+// checks that its transform keeps them within float range.
+struct ObjectBounds {
+    Vec3d lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+
+    bool empty() const { return lo.x > hi.x; }
+    void add(const Vec3d& p);
+    void add(const TriangleMesh& mesh);
+    void add(const Sphere& sphere);
+    void add(const Disk& disk);
+};
+
+// Where a list of shapes is read: the scene's `shapes` (object empty), or an object's, whose shapes
+// may neither emit nor be instances, and which collects their bounds.
+struct ShapeSection {
+    std::filesystem::path folder;            // mesh files are relative to it
+    std::optional<std::string> object;       // the object's name; none for the scene's shapes
+    ObjectBounds* bounds = nullptr;          // the object's, while it is read
+    std::span<const ObjectBounds> objects;   // every object's, for instances
+};
+
+// `shapes`: meshes (loaded relative to the section's folder, each charged to `budget` before it
+// is built), quads, spheres, disks and instances of objects; needs the materials and objects.
+void read_shapes(const JsonCursor& shapes, const ShapeSection& section, Scene& scene, MemoryBudget& budget);
+
+// `objects`: name -> {"shapes": [...]}, each a run of shapes in object space that instances place
+// (geometry/instance.h); read after the materials and before `shapes`. Returns each object's
+// bounds, for the instances.
+std::vector<ObjectBounds> read_objects(JsonCursor objects, const std::filesystem::path& folder, Scene& scene,
+                                       MemoryBudget& budget);
+
+// An `instance` shape of `shapes`: `object` (a name) and `transform`.
+void read_instance(JsonCursor& c, const ShapeSection& section, Scene& scene, MemoryBudget& budget);
 
 // `lights`: at most one environment, charged to `budget`, and point, spot and directional lights;
 // needs the integrator (bsdf cannot see delta lights).

@@ -18,7 +18,7 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 4> kShapeTypes = {"mesh", "sphere", "quad", "disk"};
+constexpr std::array<std::string_view, 5> kShapeTypes = {"mesh", "sphere", "quad", "disk", "instance"};
 // |sin| of the angle between a quad's edges below which it has no usable area or normal.
 constexpr double kParallelSine = 1e-6;
 
@@ -140,11 +140,31 @@ MeshSizeCheck budget_check(const std::filesystem::path& path, const std::string&
     };
 }
 
-void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene, MemoryBudget& budget) {
-    std::string_view type = c.require("type").choice("shape type", kShapeTypes);
+void read_shape(JsonCursor c, const ShapeSection& section, Scene& scene, MemoryBudget& budget) {
+    JsonCursor type_key = c.require("type");
+    std::string_view type = type_key.choice("shape type", kShapeTypes);
+    if (type == "instance") {
+        if (section.object)
+            type_key.fail(fmt::format("object {} cannot hold an instance: objects do not nest (nor do pbrt-v4's); "
+                                      "place the instance in the scene's \"shapes\"",
+                                      json_quoted(*section.object)));
+        read_instance(c, section, scene, budget);
+        return;
+    }
     Shape shape;
     shape.material = material_index(c.require("material"), scene);
     std::optional<JsonCursor> emission_scale = c.get("emission_scale");
+    if (section.object) {
+        // A light must be sampled where it is, once per placement; pbrt-v4 refuses area lights in
+        // instances too.
+        for (std::string_view key : {"emission", "emission_scale", "two_sided"})
+            if (c.has(key))
+                c.document().fail_at_key(
+                    c.pointer(), key,
+                    fmt::format("the shapes of object {} cannot emit: instances are not lights (pbrt-v4 has no area "
+                                "lights in instances either); place the light as a shape of \"shapes\"",
+                                json_quoted(*section.object)));
+    }
     if (auto v = c.get("emission")) {
         // pbrt-v4's area light: its `L` (RGB, or a spectrum normalized to luminance 1) times
         // its `scale`.
@@ -185,6 +205,7 @@ void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene,
         shape.index = static_cast<uint32_t>(scene.spheres.size());
         scene.spheres.push_back(sphere);
         scene.shapes.push_back(shape);
+        if (section.bounds) section.bounds->add(sphere);
         return;
     }
 
@@ -194,6 +215,7 @@ void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene,
         shape.index = static_cast<uint32_t>(scene.disks.size());
         scene.disks.push_back(disk);
         scene.shapes.push_back(shape);
+        if (section.bounds) section.bounds->add(disk);
         return;
     }
 
@@ -214,10 +236,12 @@ void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene,
                                 : "the quad has no area in float precision (its edges are too short)");
     } else {
         JsonCursor file = c.require("file");
-        std::filesystem::path path = referenced_file(file, folder, "mesh");
+        std::filesystem::path path = referenced_file(file, section.folder, "mesh");
         // Every key is checked before the (possibly slow) load.
         c.reject_unknown_keys();
-        mesh = load_referenced(file, [&] { return load_mesh(path, budget_check(path, file.string(), budget)); });
+        mesh = load_referenced(file, [&] {
+            return load_mesh(path, budget_check(path, file.string(), budget));
+        });
         if (mesh.triangle_count() == 0)
             file.fail(fmt::format("mesh file {} has no triangles", json_quoted(file.string())));
         transform_mesh(mesh, to_world, reverse_orientation);
@@ -230,15 +254,15 @@ void read_shape(JsonCursor c, const std::filesystem::path& folder, Scene& scene,
     }
     shape.kind = ShapeKind::kMesh;
     shape.index = static_cast<uint32_t>(scene.meshes.size());
+    if (section.bounds) section.bounds->add(mesh);
     scene.meshes.push_back(std::move(mesh));
     scene.shapes.push_back(shape);
 }
 
 }  // namespace
 
-void read_shapes(const JsonCursor& shapes, const std::filesystem::path& folder, Scene& scene,
-                 MemoryBudget& budget) {
-    for (const JsonCursor& c : shapes.elements()) read_shape(c, folder, scene, budget);
+void read_shapes(const JsonCursor& shapes, const ShapeSection& section, Scene& scene, MemoryBudget& budget) {
+    for (const JsonCursor& c : shapes.elements()) read_shape(c, section, scene, budget);
 }
 
 }  // namespace candela
