@@ -9,6 +9,7 @@
 
 #include "candela/core/error.h"
 #include "cli_exit_codes.h"
+#include "convert_command.h"
 #include "render_command.h"
 
 using namespace candela;
@@ -20,6 +21,8 @@ int main(int argc, char** argv) {
 
     cli::RenderArgs render_args;
     CLI::App* render_cmd = cli::add_render_command(app, render_args);
+    cli::ConvertArgs convert_args;
+    CLI::App* convert_cmd = cli::add_convert_command(app, convert_args);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -35,6 +38,7 @@ int main(int argc, char** argv) {
 
     try {
         if (render_cmd->parsed()) return cli::run_render(render_args);
+        if (convert_cmd->parsed()) return cli::run_convert(convert_args);
         return cli::kExitInternal;
     } catch (const SceneError& e) {
         fmt::print(stderr, "candela: error: {}\n", e.what());

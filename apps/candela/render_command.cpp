@@ -24,7 +24,7 @@
 #include "candela/render/renderer.h"
 #include "candela/scene/content_hash.h"
 #include "candela/scene/enum_names.h"
-#include "candela/formats/json/scene_loader.h"
+#include "candela/formats/scene_file.h"
 #include "render_command.h"
 #include "stop_signals.h"
 
@@ -175,7 +175,6 @@ int run_render(const RenderArgs& a) {
     using Clock = std::chrono::steady_clock;
     const Clock::time_point started = Clock::now();
     std::vector<fs::path> outputs(a.outputs.begin(), a.outputs.end());
-    if (outputs.empty()) outputs.push_back(default_output(a.scene));
     for (const fs::path& out : outputs)
         if (!is_writable_image_extension(out))
             bad_flag(fmt::format("-o {}: unknown image format \"{}\"; expected one of: .exr, .pfm, .hdr, .png, .ppm",
@@ -183,13 +182,21 @@ int run_render(const RenderArgs& a) {
     if (a.threads && *a.threads < 0) bad_flag(fmt::format("--threads: expected an integer >= 0, got {}", *a.threads));
     if (a.time_limit) seconds_flag("--time-limit", *a.time_limit);
     if (a.checkpoint_every) seconds_flag("--checkpoint-every", *a.checkpoint_every);
-    const fs::path checkpoint = a.checkpoint ? fs::path(*a.checkpoint) : fs::path(outputs.front().string() + ".ckpt");
 
     StartupTimes startup;
     const double load_start = seconds_since_start();
     const MemoryLimit limit = memory_limit(a);
-    Scene scene = load_scene(a.scene, LoadOptions{limit});
+    Scene scene = load_scene_file(a.scene, LoadOptions{.memory_limit = limit, .meshes = nullptr, .source_map = {}});
     startup.load_seconds = seconds_since_start() - load_start;
+    // The scene's own output name (pbrt-v4's Film "filename"), else one made from the scene's.
+    if (outputs.empty()) {
+        fs::path named = scene.output_file.empty() ? default_output(a.scene) : fs::path(scene.output_file);
+        if (!is_writable_image_extension(named))
+            bad_flag(fmt::format("the scene's output file {} has an image format candela cannot write; give -o",
+                                 named.string()));
+        outputs.push_back(named);
+    }
+    const fs::path checkpoint = a.checkpoint ? fs::path(*a.checkpoint) : fs::path(outputs.front().string() + ".ckpt");
     for (const std::string& w : scene.warnings) fmt::print(stderr, "candela: warning: {}\n", w);
     apply_overrides(a, scene);
     check_memory(a, scene, limit);

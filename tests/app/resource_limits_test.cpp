@@ -40,7 +40,7 @@ fs::path write_file(const fs::path& file, const std::string& text) {
 
 SceneError load_error(const fs::path& scene, const MemoryLimit& limit) {
     try {
-        load_scene(scene, LoadOptions{limit});
+        load_scene(scene, LoadOptions{.memory_limit = limit, .meshes = nullptr, .source_map = {}});
     } catch (const SceneError& e) {
         return e;
     }

@@ -81,7 +81,9 @@ CANDELA_HD Color LayeredLobe<Base>::eval(const Vec3f& wo_in, const Vec3f& wi_in,
     // strategy (a base or phase sample) draws `up`. pbrt-v4 weights with the reverse density
     // coat.pdf(-up, wi), in wi's measure, so its two weights do not add to 1 and its f is too
     // bright behind rough coats (by 3 to 11 % in layered_stat_test.cpp's cases).
-    auto next_event_pdf = [&](const Vec3f& up) { return coat.pdf(wi, -up, ReflTrans::kTransmission); };
+    auto next_event_pdf = [&](const Vec3f& up) {
+        return pbrt_v4_weights ? coat.pdf(-up, wi, ReflTrans::kAll) : coat.pdf(wi, -up, ReflTrans::kTransmission);
+    };
 
     Rng rng = direction_rng(wo, wi, kEvalSalt);
     auto r = [&rng]() { return rng.next_float(); };
@@ -272,7 +274,8 @@ CANDELA_HD std::optional<BsdfSample> LayeredLobe<Base>::sample(const Vec3f& wo_i
     // so max_depth + 1 events count the paths of at most max_depth events between the layers,
     // the paths eval() counts (pbrt-v4 stops one event earlier, so that its Sample_f and f
     // truncate differently wherever the medium scatters or max_depth is odd).
-    for (int depth = 0; depth <= max_depth; ++depth) {
+    const int events = pbrt_v4_weights ? max_depth - 1 : max_depth;
+    for (int depth = 0; depth <= events; ++depth) {
         // Roulette on the walk's weight f / pdf; the survival probability joins the density.
         float rr_beta = f.max_component() / pdf;
         if (depth > 3 && rr_beta < 0.25f) {

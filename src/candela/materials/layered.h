@@ -64,6 +64,10 @@ struct LayeredLobe {
     float g = 0.0f;                // Henyey-Greenstein asymmetry of the medium, in [-1, 1]
     uint16_t max_depth = 10;       // scattering events per random walk
     uint16_t n_samples = 1;        // random walks per eval()
+    // Reproduce pbrt-v4's LayeredBxDF where it differs from the above (pbrt-v4 scenes set it, so
+    // that they render as pbrt-v4 renders them): eval()'s exit weights use pbrt-v4's reverse
+    // density (all of the coat's lobes, in wi's measure), and sample() walks max_depth events.
+    bool pbrt_v4_weights = false;
 
     // An estimate of f(wo, wi) without the cosine (see the top of the file).
     CANDELA_HD Color eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const;

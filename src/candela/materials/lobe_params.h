@@ -235,6 +235,7 @@ struct CoatParams {
     FloatParam g{0.0f};
     uint16_t max_depth = 10;
     uint16_t n_samples = 1;
+    bool pbrt_v4_weights = false;  // LayeredLobe::pbrt_v4_weights
 
     // Fills the coat and medium of `lobe` at ctx, clamping as pbrt-v4's GetBxDF does.
     template <class Lobe>
@@ -245,6 +246,7 @@ struct CoatParams {
         lobe.g = clamp(t.eval(g, ctx), -1.0f, 1.0f);
         lobe.max_depth = max_depth;
         lobe.n_samples = n_samples;
+        lobe.pbrt_v4_weights = pbrt_v4_weights;
     }
     CANDELA_HD bool is_textured() const {
         return roughness.is_textured() || thickness.is_textured() || medium_albedo.is_textured() ||

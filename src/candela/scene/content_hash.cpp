@@ -40,19 +40,23 @@ void add_file_bytes(Hash64& hash, const fs::path& file) {
 
 // Every string under a "file" key (meshes, images) or a "spectrum_file" key (.spd spectra),
 // depth first in the canonical key order.
-void add_referenced_files(Hash64& hash, const Json& value, const fs::path& folder) {
+void add_referenced_files(Hash64& hash, const Json& value, const fs::path& folder,
+                          const std::map<std::string, uint64_t>& inline_files) {
     if (value.is_object()) {
         for (const auto& [key, member] : value.items()) {
             if ((key == "file" || key == "spectrum_file") && member.is_string()) {
                 const std::string name = member.get<std::string>();
                 hash.add_field(name);
-                add_file_bytes(hash, folder / fs::path(name));  // an absolute name stays as it is
+                if (auto it = inline_files.find(name); it != inline_files.end())
+                    hash.add_u64(it->second);
+                else
+                    add_file_bytes(hash, folder / fs::path(name));  // an absolute name stays as it is
             } else {
-                add_referenced_files(hash, member, folder);
+                add_referenced_files(hash, member, folder, inline_files);
             }
         }
     } else if (value.is_array()) {
-        for (const Json& element : value) add_referenced_files(hash, element, folder);
+        for (const Json& element : value) add_referenced_files(hash, element, folder, inline_files);
     }
 }
 
@@ -79,7 +83,7 @@ uint64_t scene_content_hash(std::string_view json_text, const Scene& scene) {
     Hash64 hash;
     hash.add_field("candela scene content v1");
     hash.add_field(json.dump(-1, ' ', false, Json::error_handler_t::replace));
-    add_referenced_files(hash, json, scene.file.parent_path());
+    add_referenced_files(hash, json, scene.file.parent_path(), scene.inline_file_hashes);
     hash.add_u64(uint64_t(scene.camera.width));
     hash.add_u64(uint64_t(scene.camera.height));
     hash.add_field(integrator_type_name(scene.integrator.type));
@@ -100,6 +104,8 @@ uint64_t scene_content_hash(std::string_view json_text, const Scene& scene) {
     return hash.value();
 }
 
-uint64_t scene_content_hash(const Scene& scene) { return scene_content_hash(read_text(scene.file), scene); }
+uint64_t scene_content_hash(const Scene& scene) {
+    return scene_content_hash(scene.translated_json.empty() ? read_text(scene.file) : scene.translated_json, scene);
+}
 
 }  // namespace candela

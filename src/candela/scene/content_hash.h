@@ -22,7 +22,9 @@ namespace candela {
 // scene.file. Throws SceneError naming a referenced file that cannot be read.
 uint64_t scene_content_hash(std::string_view json_text, const Scene& scene);
 
-// The same, reading the JSON text from scene.file.
+// The same, reading the JSON text from scene.file, or for a translated scene (a pbrt-v4 file)
+// from scene.translated_json, with scene.inline_file_hashes standing for the files it names that
+// were held in memory.
 uint64_t scene_content_hash(const Scene& scene);
 
 }  // namespace candela

@@ -147,6 +147,12 @@ JsonDocument::~JsonDocument() = default;
 JsonCursor JsonDocument::root() const { return JsonCursor(*this, *root_, ""); }
 
 SourceLocation JsonDocument::locate(const std::string& pointer, bool at_key) const {
+    if (source_map_) {
+        if (std::optional<SourceLocation> origin = source_map_(pointer)) {
+            origin->json_pointer = pointer;
+            return *origin;
+        }
+    }
     SourceLocation where{file_, 0, 0, pointer};
     if (auto span = find_json_pointer(text_, pointer)) {
         TextPosition p = text_position(text_, at_key ? span->key_offset : span->value_offset);

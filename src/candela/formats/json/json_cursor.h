@@ -12,6 +12,7 @@
 // Internal to scene/: only json_cursor.cpp sees nlohmann-json, the rest uses the forward
 // declaration.
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
@@ -42,6 +43,12 @@ class JsonDocument {
     JsonCursor root() const;
     const std::string& file() const { return file_; }
 
+    // For a document translated from another scene file: where the value at a JSON pointer came
+    // from (the pointer itself or the nearest enclosing one the map knows). locate() then answers
+    // with that file, line and column, keeping the pointer.
+    using SourceMap = std::function<std::optional<SourceLocation>(const std::string& pointer)>;
+    void set_source_map(SourceMap map) { source_map_ = std::move(map); }
+
     // Where the value at `pointer` is (or the key naming it, when at_key), filled as far as found.
     SourceLocation locate(const std::string& pointer, bool at_key = false) const;
     // Throws SceneError at the value `pointer`, or at the key `key` of the object `pointer`.
@@ -53,6 +60,7 @@ class JsonDocument {
     std::string text_;
     std::string file_;
     std::unique_ptr<nlohmann::ordered_json> root_;
+    SourceMap source_map_;
 };
 
 // The allowed range of a number: lo and hi, each inclusive or not; infinite means unbounded.

@@ -258,7 +258,11 @@ void read_sensor(JsonCursor& c, FilmSettings& film) {
     }
 }
 
-void read_film(JsonCursor c, FilmSettings& film, const CameraSettings& camera) {
+void read_film(JsonCursor c, FilmSettings& film, const CameraSettings& camera, std::string& output_file) {
+    if (auto v = c.get("filename")) {
+        output_file = v->string();
+        if (output_file.empty()) v->fail_expected("an image file name");
+    }
     if (auto v = c.get("filter")) film.filter = read_filter(*v);
     if (auto v = c.get("crop_window")) film.crop_window = read_crop_window(*v, camera);
     if (auto v = c.get("tonemap"))
@@ -342,6 +346,7 @@ Scene load_scene(const std::filesystem::path& file, const LoadOptions& options) 
 Scene load_scene_from_string(std::string_view json, const std::filesystem::path& file,
                              const LoadOptions& options) {
     JsonDocument document{std::string(json), file.string()};
+    if (options.source_map) document.set_source_map(options.source_map);
     JsonCursor root = document.root();
     // Unknown sections first: a misspelt "materials" would otherwise surface as an undefined
     // material in `shapes`, far from the typo.
@@ -357,12 +362,12 @@ Scene load_scene_from_string(std::string_view json, const std::filesystem::path&
     std::optional<JsonCursor> camera = root.get("camera");
     if (camera) read_camera(*camera, scene.camera, budget);
     if (budget.used() == 0) check_film_memory(scene.camera, camera ? *camera : root, budget);
-    if (auto c = root.get("film")) read_film(*c, scene.film, scene.camera);
+    if (auto c = root.get("film")) read_film(*c, scene.film, scene.camera, scene.output_file);
     if (auto c = root.get("textures")) read_textures(*c, scene);
     if (auto c = root.get("materials")) read_materials(*c, scene);
     std::vector<ObjectBounds> objects;
-    if (auto c = root.get("objects")) objects = read_objects(*c, folder, scene, budget);
-    if (auto c = root.get("shapes")) read_shapes(*c, ShapeSection{folder, std::nullopt, nullptr, objects}, scene, budget);
+    if (auto c = root.get("objects")) objects = read_objects(*c, folder, scene, budget, options.meshes);
+    if (auto c = root.get("shapes")) read_shapes(*c, ShapeSection{folder, std::nullopt, nullptr, objects, options.meshes}, scene, budget);
     if (auto c = root.get("lights")) read_lights(*c, folder, scene, budget);
     load_texture_images(scene, document, budget);
     warn_if_unlit(scene);

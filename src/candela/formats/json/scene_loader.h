@@ -4,11 +4,13 @@
 // problem throws SceneError located as "file:line:col: /json/pointer: message"; unknown keys are
 // errors, with a "did you mean" for near misses.
 #include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
 #include <string_view>
 
-#include <optional>
-
 #include "candela/core/error.h"
+#include "candela/formats/mesh/mesh_store.h"
 #include "candela/scene/memory_budget.h"
 #include "candela/scene/scene.h"
 
@@ -18,6 +20,11 @@ struct LoadOptions {
     // What the scene may need in memory to render (film, meshes with their BVH, environment),
     // checked as it loads, before each large allocation; by default what this process can have.
     std::optional<MemoryLimit> memory_limit;
+    // Meshes by the `file` names the scene gives them, looked up before the disk (mesh_store.h).
+    const MeshStore* meshes = nullptr;
+    // For a scene translated from another file (a pbrt-v4 scene): where the element at a JSON
+    // pointer came from, so that errors point into that file; nullopt for "unknown here".
+    std::function<std::optional<SourceLocation>(const std::string& pointer)> source_map;
 };
 
 // Reads and loads `file`; the location of errors names it as given. Throws SceneError for a

@@ -115,6 +115,7 @@ CoatParams read_coat(JsonCursor& c, Scene& scene, std::string_view roughness_key
     if (auto v = c.get("g")) p.g = read_float_param(*v, scene, Bounds::closed(-1, 1));
     if (auto v = c.get("maxdepth")) p.max_depth = static_cast<uint16_t>(v->integer(Bounds::closed(0, 65535)));
     if (auto v = c.get("nsamples")) p.n_samples = static_cast<uint16_t>(v->integer(Bounds::closed(1, 65535)));
+    if (auto v = c.get("pbrt_v4_weights")) p.pbrt_v4_weights = v->boolean();
     return p;
 }
 

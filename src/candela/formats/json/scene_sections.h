@@ -15,6 +15,7 @@
 #include "candela/math/constants.h"
 #include "candela/math/transform.h"
 #include "candela/formats/json/json_cursor.h"
+#include "candela/formats/mesh/mesh_store.h"
 #include "candela/scene/memory_budget.h"
 #include "candela/scene/scene.h"
 
@@ -75,6 +76,7 @@ struct ShapeSection {
     std::optional<std::string> object;       // the object's name; none for the scene's shapes
     ObjectBounds* bounds = nullptr;          // the object's, while it is read
     std::span<const ObjectBounds> objects;   // every object's, for instances
+    const MeshStore* meshes = nullptr;       // meshes by file name, found before the disk (mesh_store.h)
 };
 
 // `shapes`: meshes (loaded relative to the section's folder, each charged to `budget` before it
@@ -85,7 +87,7 @@ void read_shapes(const JsonCursor& shapes, const ShapeSection& section, Scene& s
 // (geometry/instance.h); read after the materials and before `shapes`. Returns each object's
 // bounds, for the instances.
 std::vector<ObjectBounds> read_objects(JsonCursor objects, const std::filesystem::path& folder, Scene& scene,
-                                       MemoryBudget& budget);
+                                       MemoryBudget& budget, const MeshStore* meshes = nullptr);
 
 // An `instance` shape of `shapes`: `object` (a name) and `transform`.
 void read_instance(JsonCursor& c, const ShapeSection& section, Scene& scene, MemoryBudget& budget);

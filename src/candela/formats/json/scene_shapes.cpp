@@ -236,12 +236,21 @@ void read_shape(JsonCursor c, const ShapeSection& section, Scene& scene, MemoryB
                                 : "the quad has no area in float precision (its edges are too short)");
     } else {
         JsonCursor file = c.require("file");
-        std::filesystem::path path = referenced_file(file, section.folder, "mesh");
-        // Every key is checked before the (possibly slow) load.
-        c.reject_unknown_keys();
-        mesh = load_referenced(file, [&] {
-            return load_mesh(path, budget_check(path, file.string(), budget));
-        });
+        const MeshStore* meshes = section.meshes;
+        const auto stored = meshes ? meshes->find(file.string()) : MeshStore::const_iterator{};
+        if (meshes && stored != meshes->end()) {
+            c.reject_unknown_keys();
+            mesh = stored->second;
+            const TriangleMesh& m = stored->second;
+            budget_check(file.string(), file.string(), budget)(
+                MeshSize{m.positions.size(), m.triangle_count(), 0, !m.normals.empty(), !m.uvs.empty()});
+            load_referenced(file, [&] { finish_loaded_mesh(mesh, file.string()); });
+        } else {
+            std::filesystem::path path = referenced_file(file, section.folder, "mesh");
+            // Every key is checked before the (possibly slow) load.
+            c.reject_unknown_keys();
+            mesh = load_referenced(file, [&] { return load_mesh(path, budget_check(path, file.string(), budget)); });
+        }
         if (mesh.triangle_count() == 0)
             file.fail(fmt::format("mesh file {} has no triangles", json_quoted(file.string())));
         transform_mesh(mesh, to_world, reverse_orientation);

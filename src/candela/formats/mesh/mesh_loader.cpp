@@ -88,7 +88,9 @@ class MappedFile {
 // the whole mesh then drops its normals and renders with geometric normals (flat shading), rather
 // than mixing interpolated and made-up ones; files with such normals exist (degenerate regions of
 // scans), and refusing them would refuse usable geometry.
-void finish(TriangleMesh& mesh, const std::string& name) {
+}  // namespace
+
+void finish_loaded_mesh(TriangleMesh& mesh, const std::string& name) {
     if (mesh.triangle_count() == 0)
         throw SceneError(SourceLocation{name, 0, 0, {}}, "the mesh file has no triangles");
     for (size_t i = 0; i < mesh.positions.size(); ++i)
@@ -110,8 +112,6 @@ void finish(TriangleMesh& mesh, const std::string& name) {
     for (Vec3f& n : mesh.normals) n = normalize(n);
 }
 
-}  // namespace
-
 TriangleMesh load_mesh(const std::filesystem::path& file, const MeshSizeCheck& check) {
     const std::string name = file.string();
     const std::string file_name = lower_case(file.filename().string());
@@ -122,7 +122,7 @@ TriangleMesh load_mesh(const std::filesystem::path& file, const MeshSizeCheck& c
     if (match) {
         const MappedFile bytes(file, name);
         TriangleMesh mesh = match->parse(bytes.bytes(), name, check);
-        finish(mesh, name);
+        finish_loaded_mesh(mesh, name);
         return mesh;
     }
     std::string known;

@@ -1,0 +1,61 @@
+#include "candela/formats/pbrt/pbrt_convert.h"
+
+#include <fmt/format.h>
+
+#include "candela/core/atomic_file.h"
+#include "candela/core/error.h"
+#include "candela/formats/mesh/ply_writer.h"
+#include "candela/formats/pbrt/pbrt_scene_loader.h"
+
+namespace fs = std::filesystem;
+
+namespace candela::pbrt {
+namespace {
+
+// The keys whose string values name files, relative to the scene's folder.
+bool is_file_key(const std::string& key) { return key == "file" || key == "spectrum_file" || key == "normal_map"; }
+
+// Makes the document's file names relative to the output's folder instead of the input's
+// (meshes of the store keep their names: they are written beside the output).
+void rebase_file_names(nlohmann::ordered_json& node, const fs::path& from, const fs::path& to, const MeshStore& store) {
+    if (node.is_object()) {
+        for (auto& [key, value] : node.items()) {
+            if (value.is_string() && is_file_key(key)) {
+                const std::string name = value.get<std::string>();
+                if (store.count(name) || fs::path(name).is_absolute()) continue;
+                const fs::path target = fs::weakly_canonical(fs::absolute(from / name));
+                value = target.lexically_relative(fs::weakly_canonical(fs::absolute(to))).generic_string();
+            } else {
+                rebase_file_names(value, from, to, store);
+            }
+        }
+    } else if (node.is_array()) {
+        for (auto& element : node) rebase_file_names(element, from, to, store);
+    }
+}
+
+}  // namespace
+
+ConvertResult convert_pbrt_scene(const fs::path& in, const fs::path& out) {
+    ImportedScene imported = import_pbrt_file(in);
+    // Load it as a render would, so that a scene that cannot render is refused before writing.
+    ConvertResult result;
+    result.warnings = load_imported_scene(imported, in).warnings;
+    const fs::path out_folder = out.parent_path().empty() ? fs::path(".") : out.parent_path();
+    rebase_file_names(imported.document, in.parent_path().empty() ? fs::path(".") : in.parent_path(), out_folder,
+                      imported.meshes);
+    for (const auto& [name, mesh] : imported.meshes) {
+        const fs::path file = out_folder / name;
+        std::error_code ec;
+        fs::create_directories(file.parent_path(), ec);
+        if (ec)
+            throw SceneError(SourceLocation{file.parent_path().string(), 0, 0, ""},
+                             "cannot create the folder: " + ec.message());
+        write_ply(file, mesh);
+    }
+    write_contents_atomically(out, document_text(imported));
+    result.mesh_files = imported.meshes.size();
+    return result;
+}
+
+}  // namespace candela::pbrt

@@ -1,0 +1,105 @@
+#pragma once
+// What the importer's parts share while they translate a pbrt-v4 scene (internal to
+// formats/pbrt/): the document being built, where its pieces came from, the warnings, the
+// textures' and materials' names, and the graphics state that shapes and lights read.
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "candela/formats/pbrt/pbrt_importer.h"
+#include "candela/formats/pbrt/pbrt_params.h"
+#include "candela/math/transform.h"
+
+namespace candela::pbrt {
+
+// An AreaLightSource, applied to the shapes that follow it in its attribute block.
+struct AreaLight {
+    ParameterList params;
+    Location at;
+};
+
+struct GraphicsState {
+    Transform ctm;  // object (or light, camera) space to world
+    bool reverse_orientation = false;
+    std::string material;  // the JSON name of the current material
+    std::optional<AreaLight> area_light;
+    // Attribute "shape" | "light" | "material" | "medium" | "texture": default parameters.
+    std::map<std::string, ParameterList> attributes;
+};
+
+class ImportContext {
+  public:
+    ImportContext(ImportedScene& out, std::filesystem::path folder) : out_(out), folder_(std::move(folder)) {}
+
+    // The main scene file's folder: pbrt-v4 resolves every file name against it.
+    const std::filesystem::path& folder() const { return folder_; }
+
+    Json& doc() { return out_.document; }
+    MeshStore& meshes() { return out_.meshes; }
+    // Remembers that the element at `pointer` comes from `at`.
+    void origin(const std::string& pointer, const Location& at) { out_.origins.emplace_back(pointer, at); }
+    // A warning at `at`. The same message (without its location) is reported once, with a count
+    // of the repeats at the end.
+    void warn(const Location& at, const std::string& message);
+    void finish_warnings();
+
+    // Texture names: pbrt-v4 keeps float and spectrum textures apart, candela's JSON has one set.
+    std::string define_texture_name(const std::string& pbrt_name, bool is_float);
+    std::optional<std::string> texture_name(const std::string& pbrt_name, bool want_float) const;
+    // For Params::colour / number_or_texture: the JSON name of a texture parameter's texture.
+    std::string texture_reference(const Parameter& p, bool want_float) const;
+
+    // Material names: named ones keep their name (made unique against anonymous ones).
+    std::string new_material_name(const std::string& wanted);
+    bool has_material(const std::string& name) const { return materials_.count(name) > 0; }
+    std::map<std::string, std::string>& named_materials() { return named_; }
+
+    // A fresh mesh file name for the store ("meshes/NAME-N.ply").
+    std::string new_mesh_name(const std::string& kind);
+
+  private:
+    ImportedScene& out_;
+    std::filesystem::path folder_;
+    std::map<std::string, size_t> warning_counts_;  // message -> times seen
+    std::vector<std::pair<std::string, std::string>> first_warnings_;  // (message, located line)
+    std::map<std::string, std::string> float_textures_, spectrum_textures_;  // pbrt name -> JSON name
+    std::set<std::string> texture_names_;
+    std::set<std::string> materials_;
+    std::map<std::string, std::string> named_;  // pbrt name -> JSON name
+    size_t mesh_count_ = 0;
+};
+
+// The parts of the translation, each in its own file.
+// pbrt_options.cpp: Camera, Film, PixelFilter, Sampler, Integrator (into the document's camera,
+// film, sampler, integrator) once WorldBegin shows they are complete.
+struct RenderOptions {
+    std::optional<Params> camera, film, filter, sampler, integrator;
+    Transform camera_from_world;
+    std::optional<unsigned long long> seed;  // Option "seed"
+};
+void translate_options(const RenderOptions& options, ImportContext& ctx);
+
+// pbrt_materials.cpp: a Texture directive into the document's textures; a Material or
+// MakeNamedMaterial into its materials (returns the JSON name).
+void translate_texture(const std::string& name, const std::string& value_type, const std::string& type,
+                       const Params& params, const Transform& to_world, ImportContext& ctx);
+std::string translate_material(const std::string& wanted_name, const std::string& type, const Params& params,
+                               ImportContext& ctx);
+// A copy of material `name` with pbrt's shape `alpha` (a number or {"texture": ...}).
+std::string material_with_alpha(const std::string& name, const Json& alpha, ImportContext& ctx);
+
+// pbrt_shapes.cpp: a Shape into JSON shapes appended to `shapes` (usually the document's).
+void translate_shape(const std::string& type, const Params& params, const GraphicsState& state, Json& shapes,
+                     const std::string& shapes_pointer, ImportContext& ctx);
+
+// pbrt_lights.cpp: a LightSource into the document's lights.
+void translate_light(const std::string& type, const Params& params, const Transform& light_to_world,
+                     ImportContext& ctx);
+
+// A transform in candela's JSON syntax: [{"matrix": [16 numbers row by row]}], or [] for identity.
+Json transform_json(const Transform& t);
+
+}  // namespace candela::pbrt

@@ -1,0 +1,422 @@
+#include "candela/formats/pbrt/pbrt_importer.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "candela/core/error.h"
+#include "candela/formats/pbrt/pbrt_import_context.h"
+#include "candela/formats/pbrt/pbrt_parser.h"
+#include "candela/math/constants.h"
+
+namespace candela::pbrt {
+
+// ---------------------------------------------------------------------------------------------
+// ImportContext
+
+void ImportContext::warn(const Location& at, const std::string& message) {
+    if (warning_counts_[message]++ == 0) first_warnings_.emplace_back(message, describe(at) + ": " + message);
+}
+
+void ImportContext::finish_warnings() {
+    for (const auto& [message, line] : first_warnings_) {
+        const size_t n = warning_counts_[message];
+        out_.warnings.push_back(n > 1 ? fmt::format("{} (and {} more like it)", line, n - 1) : line);
+    }
+}
+
+std::string ImportContext::define_texture_name(const std::string& pbrt_name, bool is_float) {
+    std::string name = pbrt_name;
+    // pbrt-v4 lets a float and a spectrum texture share a name; the JSON cannot.
+    if (texture_names_.count(name)) name = pbrt_name + (is_float ? " (float)" : " (spectrum)");
+    for (int i = 2; texture_names_.count(name); ++i) name = fmt::format("{} ({})", pbrt_name, i);
+    texture_names_.insert(name);
+    (is_float ? float_textures_ : spectrum_textures_)[pbrt_name] = name;
+    return name;
+}
+
+std::optional<std::string> ImportContext::texture_name(const std::string& pbrt_name, bool want_float) const {
+    const auto& table = want_float ? float_textures_ : spectrum_textures_;
+    if (auto it = table.find(pbrt_name); it != table.end()) return it->second;
+    return std::nullopt;
+}
+
+std::string ImportContext::texture_reference(const Parameter& p, bool want_float) const {
+    const std::string& name = p.strings.at(0);
+    if (auto found = texture_name(name, want_float)) return *found;
+    if (texture_name(name, !want_float))
+        fail(p.location, fmt::format("\"{}\" is a {} texture; parameter \"{}\" needs a {} texture", name,
+                                     want_float ? "spectrum" : "float", p.name, want_float ? "float" : "spectrum"));
+    fail(p.location, fmt::format("texture \"{}\" is not defined", name));
+}
+
+std::string ImportContext::new_material_name(const std::string& wanted) {
+    std::string name = wanted;
+    for (int i = 2; materials_.count(name); ++i) name = fmt::format("{}-{}", wanted, i);
+    materials_.insert(name);
+    return name;
+}
+
+std::string ImportContext::new_mesh_name(const std::string& kind) {
+    return fmt::format("meshes/{}-{}.ply", kind, ++mesh_count_);
+}
+
+Json transform_json(const Transform& t) {
+    if (t.is_identity()) return Json::array();
+    Json m = Json::array();
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) m.push_back(t.matrix()[r][c]);
+    return Json::array({Json{{"matrix", m}}});
+}
+
+namespace {
+
+// pbrt's 16 numbers are the matrix's columns (m[12..14] translate), as Transform [...] writes.
+Transform from_pbrt_matrix(const std::array<double, 16>& m) {
+    Transform::Matrix rows{};
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) rows[r][c] = m[c * 4 + r];
+    return Transform(rows);
+}
+
+// pbrt-v4's LookAt: the camera-from-world transform of an eye looking at `look` with `up`
+// (camera space: +z forward, +y up, +x = cross(up, forward), left-handed).
+std::optional<Transform> look_at_transform(const Vec3d& eye, const Vec3d& look, const Vec3d& up) {
+    const Vec3d dir = look - eye;
+    if (!(length(dir) > 0)) return std::nullopt;
+    const Vec3d d = normalize(dir);
+    const Vec3d r0 = cross(normalize(up), d);
+    if (!(length(r0) > 0)) return std::nullopt;
+    const Vec3d right = normalize(r0);
+    const Vec3d new_up = cross(d, right);
+    Transform::Matrix world_from_camera{{{right.x, new_up.x, d.x, eye.x},
+                                         {right.y, new_up.y, d.y, eye.y},
+                                         {right.z, new_up.z, d.z, eye.z},
+                                         {0, 0, 0, 1}}};
+    return Transform(world_from_camera).inverse();
+}
+
+// An object definition (its shapes are in the document's "objects").
+struct ObjectDefinition {
+    Location at;
+    bool empty = false;  // no shape candela renders: its instances are left out
+};
+
+// A JSON pointer's reference token for `name` (RFC 6901: ~ and / escaped).
+std::string pointer_token(const std::string& name) {
+    std::string out;
+    for (char c : name) out += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+    return out;
+}
+
+class Importer final : public Target {
+  public:
+    Importer(ImportedScene& out, const std::filesystem::path& file) : ctx_(out, file.parent_path()) {
+        Json& d = ctx_.doc();
+        d["integrator"] = Json::object();
+        d["sampler"] = Json::object();
+        d["camera"] = Json::object();
+        d["film"] = Json::object();
+        d["textures"] = Json::object();
+        d["materials"] = Json::object();
+        d["shapes"] = Json::array();
+        d["lights"] = Json::array();
+    }
+
+    // --- transforms -----------------------------------------------------------------------
+    void identity(const Location&) override { state_.ctm = Transform(); }
+    void translate(double dx, double dy, double dz, const Location& at) override {
+        apply(Transform::translate({dx, dy, dz}), at);
+    }
+    void scale(double sx, double sy, double sz, const Location& at) override {
+        apply(Transform::scale({sx, sy, sz}), at);
+    }
+    void rotate(double angle, double ax, double ay, double az, const Location& at) override {
+        const Vec3d axis(ax, ay, az);
+        if (!(length(axis) > 0)) fail(at, "Rotate: the axis is zero");
+        apply(Transform::rotate(axis, angle * kPiD / 180.0), at);
+    }
+    void look_at(double ex, double ey, double ez, double lx, double ly, double lz, double ux, double uy, double uz,
+                 const Location& at) override {
+        std::optional<Transform> t = look_at_transform({ex, ey, ez}, {lx, ly, lz}, {ux, uy, uz});
+        if (!t) fail(at, "LookAt: the eye equals the point looked at, or up is parallel to the view direction");
+        apply(*t, at);
+    }
+    void concat_transform(const std::array<double, 16>& m, const Location& at) override {
+        apply(from_pbrt_matrix(m), at);
+    }
+    void transform(const std::array<double, 16>& m, const Location& at) override {
+        state_.ctm = Transform();
+        apply(from_pbrt_matrix(m), at);
+    }
+    void coordinate_system(const std::string& name, const Location&) override { named_frames_[name] = state_.ctm; }
+    void coord_sys_transform(const std::string& name, const Location& at) override {
+        auto it = named_frames_.find(name);
+        if (it == named_frames_.end()) {
+            ctx_.warn(at, fmt::format("CoordSysTransform: no coordinate system named \"{}\"; ignored", name));
+            return;
+        }
+        state_.ctm = it->second;
+    }
+    void active_transform(const std::string& which, const Location& at) override {
+        if (which != "All")
+            ctx_.warn(at, "ActiveTransform StartTime/EndTime (motion blur): candela renders the scene at one "
+                          "time; transforms given for the end time are ignored");
+        ignore_transforms_ = which == "EndTime";
+    }
+    void transform_times(double, double, const Location& at) override {
+        ctx_.warn(at, "TransformTimes (motion blur) is not supported; ignored");
+    }
+    void reverse_orientation(const Location&) override { state_.reverse_orientation = !state_.reverse_orientation; }
+    void attribute_begin(const Location& at) override {
+        stack_.push_back({state_, at});
+    }
+    void attribute_end(const Location& at) override {
+        if (stack_.empty()) fail(at, "AttributeEnd without a matching AttributeBegin");
+        state_ = std::move(stack_.back().first);
+        stack_.pop_back();
+    }
+    void attribute(const std::string& target, ParameterList params, const Location& at) override {
+        static const std::set<std::string> kTargets = {"shape", "light", "material", "medium", "texture"};
+        if (!kTargets.count(target))
+            fail(at, fmt::format("Attribute: unknown target \"{}\"; expected shape, light, material, medium or "
+                                 "texture",
+                                 target));
+        ParameterList& defaults = state_.attributes[target];
+        for (Parameter& p : params) {
+            std::erase_if(defaults, [&](const Parameter& d) { return d.name == p.name; });
+            defaults.push_back(std::move(p));
+        }
+    }
+
+    // --- options --------------------------------------------------------------------------
+    void option(const std::string& name, const Parameter& value, const Location& at) override {
+        if (name == "seed" && value.numbers.size() == 1 && value.numbers[0] >= 0) {
+            options_.seed = static_cast<unsigned long long>(value.numbers[0]);
+            return;
+        }
+        ctx_.warn(at, fmt::format("Option \"{}\" is not supported; ignored", name));
+    }
+    void color_space(const std::string& name, const Location& at) override {
+        if (name != "srgb")
+            ctx_.warn(at, fmt::format("ColorSpace \"{}\": candela knows only srgb; colours are read as sRGB", name));
+    }
+    void camera(const std::string& type, ParameterList params, const Location& at) override {
+        before_world("Camera", at);
+        options_.camera.emplace(std::move(params), fmt::format("Camera \"{}\"", type), at);
+        camera_type_ = type;
+        options_.camera_from_world = state_.ctm;
+        named_frames_["camera"] = state_.ctm.inverse();
+    }
+    void film(const std::string& type, ParameterList params, const Location& at) override {
+        before_world("Film", at);
+        options_.film.emplace(std::move(params), fmt::format("Film \"{}\"", type), at);
+    }
+    void pixel_filter(const std::string& type, ParameterList params, const Location& at) override {
+        before_world("PixelFilter", at);
+        options_.filter.emplace(std::move(params), fmt::format("PixelFilter \"{}\"", type), at);
+    }
+    void sampler(const std::string& type, ParameterList params, const Location& at) override {
+        before_world("Sampler", at);
+        options_.sampler.emplace(std::move(params), fmt::format("Sampler \"{}\"", type), at);
+    }
+    void integrator(const std::string& type, ParameterList params, const Location& at) override {
+        before_world("Integrator", at);
+        options_.integrator.emplace(std::move(params), fmt::format("Integrator \"{}\"", type), at);
+    }
+    void accelerator(const std::string&, ParameterList, const Location& at) override {
+        ctx_.warn(at, "Accelerator: candela always uses Embree's BVH; ignored");
+    }
+    void make_named_medium(const std::string& name, ParameterList, const Location& at) override {
+        ctx_.warn(at, fmt::format("MakeNamedMedium \"{}\": participating media are not supported; ignored", name));
+    }
+    void medium_interface(const std::string&, const std::string&, const Location& at) override {
+        ctx_.warn(at, "MediumInterface: participating media are not supported; ignored");
+    }
+    void world_begin(const Location& at) override {
+        if (in_world_) fail(at, "WorldBegin appears twice");
+        in_world_ = true;
+        translate_options(options_, ctx_);
+        state_.ctm = Transform();
+        named_frames_["world"] = Transform();
+    }
+
+    // --- the world ------------------------------------------------------------------------
+    void texture(const std::string& name, const std::string& value_type, const std::string& type,
+                 ParameterList params, const Location& at) override {
+        in_world("Texture", at);
+        merge_defaults(params, state_.attributes["texture"]);
+        Params p(std::move(params), fmt::format("Texture \"{}\"", name), at);
+        translate_texture(name, value_type, type, p, state_.ctm, ctx_);
+        finish(p);
+    }
+    void material(const std::string& type, ParameterList params, const Location& at) override {
+        in_world("Material", at);
+        merge_defaults(params, state_.attributes["material"]);
+        Params p(std::move(params), fmt::format("Material \"{}\"", type), at);
+        state_.material = translate_material("material", type, p, ctx_);
+        finish(p);
+    }
+    void make_named_material(const std::string& name, ParameterList params, const Location& at) override {
+        in_world("MakeNamedMaterial", at);
+        if (ctx_.named_materials().count(name)) fail(at, fmt::format("MakeNamedMaterial: \"{}\" is defined twice", name));
+        merge_defaults(params, state_.attributes["material"]);
+        Params p(std::move(params), fmt::format("MakeNamedMaterial \"{}\"", name), at);
+        const std::string type = p.string_or("type", "");
+        if (type.empty()) p.fail(nullptr, fmt::format("MakeNamedMaterial \"{}\": \"string type\" is required", name));
+        ctx_.named_materials()[name] = translate_material(name, type, p, ctx_);
+        finish(p);
+    }
+    void named_material(const std::string& name, const Location& at) override {
+        in_world("NamedMaterial", at);
+        auto it = ctx_.named_materials().find(name);
+        if (it == ctx_.named_materials().end()) fail(at, fmt::format("NamedMaterial: no material named \"{}\"", name));
+        state_.material = it->second;
+    }
+    void light_source(const std::string& type, ParameterList params, const Location& at) override {
+        in_world("LightSource", at);
+        merge_defaults(params, state_.attributes["light"]);
+        Params p(std::move(params), fmt::format("LightSource \"{}\"", type), at);
+        if (object_) {
+            ctx_.warn(at, "LightSource inside ObjectBegin: pbrt-v4 does not instance lights; ignored");
+            return;
+        }
+        translate_light(type, p, state_.ctm, ctx_);
+        finish(p);
+    }
+    void area_light_source(const std::string& type, ParameterList params, const Location& at) override {
+        in_world("AreaLightSource", at);
+        if (type != "diffuse") {
+            ctx_.warn(at, fmt::format("AreaLightSource \"{}\": pbrt-v4 knows only \"diffuse\"; ignored", type));
+            state_.area_light.reset();
+            return;
+        }
+        merge_defaults(params, state_.attributes["light"]);
+        state_.area_light = AreaLight{std::move(params), at};
+    }
+    void shape(const std::string& type, ParameterList params, const Location& at) override {
+        in_world("Shape", at);
+        merge_defaults(params, state_.attributes["shape"]);
+        Params p(std::move(params), fmt::format("Shape \"{}\"", type), at);
+        ensure_material();
+        if (object_) {
+            GraphicsState s = state_;
+            if (s.area_light) {
+                ctx_.warn(at, "area lights inside ObjectBegin are not supported (as in pbrt-v4); the shape does not "
+                              "emit");
+                s.area_light.reset();
+            }
+            Json& shapes = ctx_.doc()["objects"][object_name_]["shapes"];
+            translate_shape(type, p, s, shapes, "/objects/" + pointer_token(object_name_) + "/shapes", ctx_);
+        } else {
+            translate_shape(type, p, state_, ctx_.doc()["shapes"], "/shapes", ctx_);
+        }
+        finish(p);
+    }
+    // An object's shapes keep the transform each had when defined; an instance places them by the
+    // transform at ObjectInstance (pbrt-v4: world = instance * definition), as an Embree instance
+    // of the object.
+    void object_begin(const std::string& name, const Location& at) override {
+        in_world("ObjectBegin", at);
+        if (object_) fail(at, fmt::format("ObjectBegin \"{}\" inside ObjectBegin \"{}\"", name, object_name_));
+        if (objects_.count(name)) fail(at, fmt::format("ObjectBegin: object \"{}\" is defined twice", name));
+        attribute_begin(at);
+        object_name_ = name;
+        object_ = &objects_[name];
+        object_->at = at;
+        Json& objects = ctx_.doc()["objects"];
+        objects[name] = Json{{"shapes", Json::array()}};
+        ctx_.origin("/objects/" + pointer_token(name), at);
+    }
+    void object_end(const Location& at) override {
+        if (!object_) fail(at, "ObjectEnd without ObjectBegin");
+        if (ctx_.doc()["objects"][object_name_]["shapes"].empty()) {
+            ctx_.warn(object_->at, fmt::format("object \"{}\" has no shapes candela renders; its instances are empty",
+                                               object_name_));
+            ctx_.doc()["objects"].erase(object_name_);
+            object_->empty = true;
+        }
+        object_ = nullptr;
+        attribute_end(at);
+    }
+    void object_instance(const std::string& name, const Location& at) override {
+        in_world("ObjectInstance", at);
+        if (object_) fail(at, "ObjectInstance inside ObjectBegin: instances do not nest");
+        auto it = objects_.find(name);
+        if (it == objects_.end()) fail(at, fmt::format("ObjectInstance: no object named \"{}\"", name));
+        if (it->second.empty) return;
+        Json& shapes = ctx_.doc()["shapes"];
+        Json instance{{"type", "instance"}, {"object", name}};
+        if (!state_.ctm.is_identity()) instance["transform"] = transform_json(state_.ctm);
+        ctx_.origin(fmt::format("/shapes/{}", shapes.size()), at);
+        shapes.push_back(std::move(instance));
+    }
+
+    void end_of_files() override {
+        if (!in_world_) {
+            // A file with no WorldBegin still has its options.
+            translate_options(options_, ctx_);
+        }
+        if (object_) ctx_.warn(object_->at, "ObjectBegin without ObjectEnd");
+        ctx_.finish_warnings();
+    }
+    void warn(const Location& at, const std::string& message) override { ctx_.warn(at, message); }
+
+  private:
+    void apply(const Transform& t, const Location& at) {
+        if (ignore_transforms_) return;
+        if (!t.invertible()) fail(at, "the transform is not invertible (a zero scale?)");
+        state_.ctm = state_.ctm * t;
+    }
+    void before_world(const char* directive, const Location& at) {
+        if (in_world_) fail(at, fmt::format("{} must come before WorldBegin", directive));
+    }
+    void in_world(const char* directive, const Location& at) {
+        if (!in_world_) fail(at, fmt::format("{} must come after WorldBegin", directive));
+    }
+    void finish(const Params& p) {
+        p.report_unused([&](const Location& at, const std::string& m) { ctx_.warn(at, m); });
+    }
+    // pbrt-v4's default material: diffuse of reflectance 0.5.
+    void ensure_material() {
+        if (!state_.material.empty()) return;
+        if (default_material_.empty()) {
+            default_material_ = ctx_.new_material_name("default");
+            ctx_.doc()["materials"][default_material_] = Json{{"type", "diffuse"}, {"albedo", 0.5}};
+        }
+        state_.material = default_material_;
+    }
+    ImportContext ctx_;
+    GraphicsState state_;
+    std::vector<std::pair<GraphicsState, Location>> stack_;
+    std::map<std::string, Transform> named_frames_;
+    RenderOptions options_;
+    std::string camera_type_;
+    bool in_world_ = false;
+    bool ignore_transforms_ = false;
+    std::string default_material_;
+    std::map<std::string, ObjectDefinition> objects_;
+    ObjectDefinition* object_ = nullptr;
+    std::string object_name_;
+};
+
+}  // namespace
+
+ImportedScene import_pbrt_file(const std::filesystem::path& file) {
+    ImportedScene out;
+    Importer importer(out, file);
+    parse_file(file, importer);
+    return out;
+}
+
+ImportedScene import_pbrt_string(std::string_view text, const std::filesystem::path& name) {
+    ImportedScene out;
+    Importer importer(out, name);
+    parse_string(text, name, importer);
+    return out;
+}
+
+}  // namespace candela::pbrt

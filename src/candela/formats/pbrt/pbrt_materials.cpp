@@ -1,0 +1,302 @@
+// pbrt-v4's textures and materials as candela's (docs/SCENE_FORMAT.md, "textures" and
+// "materials"), with pbrt-v4's defaults and parameter names. Roughness: pbrt-v4 remaps it to the
+// microfacet alpha with sqrt (remaproughness, true by default); candela's roughness is alpha.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "candela/formats/pbrt/pbrt_import_context.h"
+
+namespace candela::pbrt {
+namespace {
+
+auto spectrum_textures(const ImportContext& ctx) {
+    return [&ctx](const Parameter& p) { return ctx.texture_reference(p, false); };
+}
+auto float_textures(const ImportContext& ctx) {
+    return [&ctx](const Parameter& p) { return ctx.texture_reference(p, true); };
+}
+
+// A texture input: a colour or texture for a spectrum texture, a number or texture for a float.
+Json texture_input(const Params& p, const std::string& name, bool is_float, const Json& fallback,
+                   const ImportContext& ctx) {
+    Json v = is_float ? p.number_or_texture(name, float_textures(ctx)) : p.colour(name, spectrum_textures(ctx));
+    return v.is_null() ? fallback : v;
+}
+
+// pbrt-v4's (u, v) mapping: (su u + du, sv v + dv). Other mappings are warned about.
+void read_uv_mapping(const Params& p, Json& t, ImportContext& ctx) {
+    const std::string mapping = p.string_or("mapping", "uv");
+    if (mapping != "uv")
+        ctx.warn(p.find("mapping")->location,
+                 fmt::format("{}: mapping \"{}\" is not supported; the surface's (u, v) is used", p.directive(), mapping));
+    const double su = p.float_or("uscale", 1), sv = p.float_or("vscale", 1);
+    const double du = p.float_or("udelta", 0), dv = p.float_or("vdelta", 0);
+    if (su != 1 || sv != 1) t["uv_scale"] = Json::array({su, sv});
+    if (du != 0 || dv != 0) t["uv_offset"] = Json::array({du, dv});
+    for (const char* unused : {"v1", "v2"})
+        if (p.has(unused)) ctx.warn(p.find(unused)->location, fmt::format("{}: \"{}\" (planar mapping) is ignored", p.directive(), unused));
+}
+
+bool is_8bit_image(const std::string& file) {
+    std::string ext = file.substr(file.find_last_of('.') + 1);
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext == "png" || ext == "jpg" || ext == "jpeg" || ext == "tga" || ext == "bmp";
+}
+
+Json image_texture(const Params& p, ImportContext& ctx) {
+    const std::string file = p.string_or("filename", "");
+    if (file.empty()) p.fail(nullptr, fmt::format("{}: \"string filename\" is required", p.directive()));
+    Json t{{"type", "image"}, {"file", file}};
+    const std::string filter = p.string_or("filter", "bilinear");
+    if (filter == "point") {
+        t["filter"] = "point";
+    } else if (filter != "bilinear") {
+        // candela has no mipmaps: a texture much finer than the pixels averages out over samples.
+        ctx.warn(p.find("filter")->location,
+                 fmt::format("{}: filter \"{}\" is rendered as bilinear (candela has no mipmaps)", p.directive(), filter));
+    }
+    p.float_or("maxanisotropy", 8);
+    const std::string wrap = p.string_or("wrap", "repeat");
+    if (wrap == "repeat" || wrap == "black" || wrap == "clamp") {
+        t["wrap"] = wrap;
+    } else {
+        ctx.warn(p.find("wrap")->location, fmt::format("{}: wrap \"{}\" is rendered as repeat", p.directive(), wrap));
+    }
+    const std::string encoding = p.string_or("encoding", is_8bit_image(file) ? "sRGB" : "linear");
+    if (is_8bit_image(file)) {
+        if (encoding == "linear") {
+            t["colorspace"] = "linear";
+        } else if (encoding.rfind("gamma ", 0) == 0) {
+            t["colorspace"] = "gamma";
+            t["gamma"] = std::atof(encoding.c_str() + 6);
+        } else if (encoding != "sRGB") {
+            p.fail(p.find("encoding"), fmt::format("unknown encoding \"{}\"; expected sRGB, linear or \"gamma G\"", encoding));
+        }
+    }
+    if (const double s = p.float_or("scale", 1); s != 1) t["scale"] = s;
+    if (p.bool_or("invert", false)) t["invert"] = true;
+    read_uv_mapping(p, t, ctx);
+    return t;
+}
+
+}  // namespace
+
+void translate_texture(const std::string& name, const std::string& value_type, const std::string& type,
+                       const Params& p, const Transform& to_world, ImportContext& ctx) {
+    if (value_type != "float" && value_type != "spectrum")
+        p.fail(nullptr, fmt::format("Texture \"{}\": the value type must be \"float\" or \"spectrum\", not \"{}\"", name,
+                                    value_type));
+    const bool is_float = value_type == "float";
+    const Json one = is_float ? Json(1.0) : Json(1.0), zero = Json(0.0);
+    Json t;
+    if (type == "imagemap") {
+        t = image_texture(p, ctx);
+    } else if (type == "constant") {
+        t = Json{{"type", "constant"}, {"value", texture_input(p, "value", is_float, one, ctx)}};
+    } else if (type == "scale") {
+        t = Json{{"type", "scale"},
+                 {"tex", texture_input(p, "tex", is_float, one, ctx)},
+                 {"scale", texture_input(p, "scale", true, one, ctx)}};
+    } else if (type == "mix") {
+        t = Json{{"type", "mix"},
+                 {"tex1", texture_input(p, "tex1", is_float, zero, ctx)},
+                 {"tex2", texture_input(p, "tex2", is_float, one, ctx)},
+                 {"amount", texture_input(p, "amount", true, Json(0.5), ctx)}};
+    } else if (type == "checkerboard") {
+        const long long dimension = p.int_or("dimension", 2);
+        if (dimension != 2 && dimension != 3) p.fail(p.find("dimension"), "checkerboard: dimension must be 2 or 3");
+        t = Json{{"type", "checkerboard"},
+                 {"color0", texture_input(p, "tex1", is_float, one, ctx)},
+                 {"color1", texture_input(p, "tex2", is_float, zero, ctx)}};
+        if (dimension == 3) {
+            // A solid checkerboard in the texture's space: the transform at the Texture directive.
+            t["dimension"] = 3;
+            if (!to_world.is_identity()) t["transform"] = transform_json(to_world);
+        } else {
+            read_uv_mapping(p, t, ctx);
+        }
+    } else if (type == "bilerp") {
+        t = Json{{"type", "bilerp"},
+                 {"v00", texture_input(p, "v00", is_float, zero, ctx)},
+                 {"v01", texture_input(p, "v01", is_float, one, ctx)},
+                 {"v10", texture_input(p, "v10", is_float, zero, ctx)},
+                 {"v11", texture_input(p, "v11", is_float, one, ctx)}};
+        for (const char* v : {"v00", "v01", "v10", "v11"})
+            if (t[v].is_object()) p.fail(p.find(v), "bilerp: the corner values must be constants, not textures");
+        read_uv_mapping(p, t, ctx);
+    } else if (type == "directionmix") {
+        const Vec3d dir = to_world.apply_vector(p.get_point3("dir").value_or(Vec3d(0, 1, 0)));
+        if (!(length(dir) > 0)) p.fail(p.find("dir"), "directionmix: dir must be nonzero");
+        t = Json{{"type", "directionmix"},
+                 {"tex1", texture_input(p, "tex1", is_float, zero, ctx)},
+                 {"tex2", texture_input(p, "tex2", is_float, one, ctx)},
+                 {"dir", Json::array({dir.x, dir.y, dir.z})}};
+    } else {
+        ctx.warn(p.location(), fmt::format("Texture class \"{}\" is not supported; a constant 0.5 stands in", type));
+        t = Json{{"type", "constant"}, {"value", 0.5}};
+    }
+    const std::string json_name = ctx.define_texture_name(name, is_float);
+    ctx.doc()["textures"][json_name] = t;
+    ctx.origin("/textures/" + json_name, p.location());
+}
+
+namespace {
+
+// pbrt-v4's roughness pair (roughness, or uroughness / vroughness) as candela's alpha: remapped
+// with sqrt unless remaproughness is false (TrowbridgeReitzDistribution::RoughnessToAlpha).
+Json roughness(const Params& p, const std::string& prefix, ImportContext& ctx) {
+    const auto textures = float_textures(ctx);
+    Json r = p.number_or_texture(prefix + "roughness", textures);
+    Json u = p.number_or_texture(prefix + "uroughness", textures);
+    Json v = p.number_or_texture(prefix + "vroughness", textures);
+    if (u.is_null()) u = r.is_null() ? Json(0.0) : r;
+    if (v.is_null()) v = r.is_null() ? Json(0.0) : r;
+    const bool remap = p.bool_or("remaproughness", true);
+    auto to_alpha = [&](const Json& x) -> Json {
+        if (!x.is_number()) {
+            if (remap)
+                ctx.warn(p.location(), fmt::format("{}: a roughness texture is used as alpha without pbrt-v4's remapping "
+                                                   "(set remaproughness false to silence this)",
+                                                   p.directive()));
+            return x;
+        }
+        const double value = x.get<double>();
+        if (value < 0) p.fail(p.find(prefix + "roughness"), "roughness must be >= 0");
+        return remap ? std::sqrt(value) : value;
+    };
+    Json au = to_alpha(u), av = to_alpha(v);
+    if (au == av) return au;
+    return Json::array({au, av});
+}
+
+// eta as candela's ior: a number or a spectrum (a float texture cannot be an index here).
+Json ior(const Params& p, const std::string& name, double fallback, ImportContext& ctx) {
+    const Parameter* e = p.find(name);
+    if (!e) return fallback;
+    if (e->type == "texture") {
+        ctx.warn(e->location, fmt::format("{}: a textured \"{}\" is not supported; {} is used", p.directive(), name, fallback));
+        return fallback;
+    }
+    Json v = p.colour(name, spectrum_textures(ctx));
+    // pbrt-v4: an eta of 0 means 1 (an index-matched interface).
+    if (v.is_number() && v.get<double>() == 0) return 1.0;
+    return v;
+}
+
+void surface_keys(const Params& p, Json& m, ImportContext& ctx) {
+    if (auto file = p.get_string("normalmap")) m["normal_map"] = *file;
+    if (const Parameter* d = p.find("displacement")) {
+        if (m.contains("normal_map")) {
+            ctx.warn(d->location, "displacement together with normalmap: the displacement is ignored");
+        } else {
+            m["bump_map"] = p.number_or_texture("displacement", float_textures(ctx));
+        }
+    }
+}
+
+Json conductor(const Params& p, const std::string& prefix, Json& m, ImportContext& ctx, const char* eta_key,
+               const char* k_key) {
+    Json reflectance = p.colour("reflectance", spectrum_textures(ctx));
+    Json eta = p.colour(prefix + "eta", spectrum_textures(ctx));
+    Json k = p.colour(prefix + "k", spectrum_textures(ctx));
+    if (!reflectance.is_null()) {
+        if (!eta.is_null() || !k.is_null())
+            ctx.warn(p.location(), fmt::format("{}: reflectance is given, so eta and k are ignored (as in pbrt-v4)", p.directive()));
+        m["reflectance"] = reflectance;
+    } else {
+        m[eta_key] = eta.is_null() ? Json{{"spectrum", "metal-Cu-eta"}} : eta;
+        m[k_key] = k.is_null() ? Json{{"spectrum", "metal-Cu-k"}} : k;
+    }
+    return m;
+}
+
+void layered_keys(const Params& p, Json& m, ImportContext& ctx) {
+    const auto textures = float_textures(ctx);
+    Json thickness = p.number_or_texture("thickness", textures);
+    if (!thickness.is_null()) m["thickness"] = thickness;
+    Json albedo = p.colour("albedo", spectrum_textures(ctx));
+    if (!albedo.is_null()) m["medium_albedo"] = albedo;
+    Json g = p.number_or_texture("g", textures);
+    if (!g.is_null()) m["g"] = g;
+    if (auto d = p.get_int("maxdepth")) m["maxdepth"] = *d;
+    if (auto n = p.get_int("nsamples")) m["nsamples"] = *n;
+    // Render as pbrt-v4 renders: its LayeredBxDF's weights (layered.h says where they differ).
+    m["pbrt_v4_weights"] = true;
+}
+
+}  // namespace
+
+std::string translate_material(const std::string& wanted_name, const std::string& type, const Params& p,
+                               ImportContext& ctx) {
+    const auto colours = spectrum_textures(ctx);
+    Json m;
+    if (type == "diffuse") {
+        Json r = p.colour("reflectance", colours);
+        m = Json{{"type", "diffuse"}, {"albedo", r.is_null() ? Json(0.5) : r}};
+    } else if (type == "coateddiffuse") {
+        Json r = p.colour("reflectance", colours);
+        m = Json{{"type", "coated_diffuse"}, {"albedo", r.is_null() ? Json(0.5) : r}};
+        m["roughness"] = roughness(p, "", ctx);
+        m["ior"] = ior(p, "eta", 1.5, ctx);
+        layered_keys(p, m, ctx);
+    } else if (type == "coatedconductor") {
+        m = Json{{"type", "coated_conductor"}};
+        m["interface_roughness"] = roughness(p, "interface.", ctx);
+        m["ior"] = ior(p, "interface.eta", 1.5, ctx);
+        m["conductor_roughness"] = roughness(p, "conductor.", ctx);
+        conductor(p, "conductor.", m, ctx, "conductor_eta", "conductor_k");
+        layered_keys(p, m, ctx);
+    } else if (type == "conductor") {
+        m = Json{{"type", "conductor"}};
+        conductor(p, "", m, ctx, "eta", "k");
+        m["roughness"] = roughness(p, "", ctx);
+    } else if (type == "dielectric") {
+        m = Json{{"type", "dielectric"}, {"ior", ior(p, "eta", 1.5, ctx)}};
+        Json r = roughness(p, "", ctx);
+        if (r != Json(0.0)) m["roughness"] = r;
+    } else if (type == "thindielectric") {
+        m = Json{{"type", "thin_dielectric"}, {"ior", ior(p, "eta", 1.5, ctx)}};
+    } else if (type == "mix") {
+        std::vector<std::string> parts = p.strings("materials");
+        if (parts.size() != 2) p.fail(p.find("materials"), "mix: \"string materials\" must name two materials");
+        Json names = Json::array();
+        for (const std::string& part : parts) {
+            auto it = ctx.named_materials().find(part);
+            if (it == ctx.named_materials().end())
+                p.fail(p.find("materials"), fmt::format("mix: no material named \"{}\"", part));
+            names.push_back(it->second);
+        }
+        Json amount = p.number_or_texture("amount", float_textures(ctx));
+        m = Json{{"type", "blend"}, {"materials", names}, {"amount", amount.is_null() ? Json(0.5) : amount}};
+    } else if (type == "interface") {
+        // A boundary between media, invisible to light: rays pass through it.
+        m = Json{{"type", "diffuse"}, {"alpha", 0.0}};
+    } else if (type == "" || type == "none") {
+        m = Json{{"type", "diffuse"}, {"alpha", 0.0}};
+    } else {
+        // measured, hair, subsurface, diffusetransmission: a diffuse stand-in of their colour.
+        Json r = p.colour("reflectance", colours);
+        if (r.is_null() && type == "diffusetransmission") r = Json(0.25);
+        ctx.warn(p.location(), fmt::format("Material \"{}\" is not supported; a diffuse material of {} stands in", type,
+                                           r.is_null() ? "reflectance 0.5" : "its reflectance"));
+        m = Json{{"type", "diffuse"}, {"albedo", r.is_null() ? Json(0.5) : r}};
+    }
+    p.string_or("type", "");
+    if (m["type"] != "blend") surface_keys(p, m, ctx);
+    const std::string name = ctx.new_material_name(wanted_name);
+    ctx.doc()["materials"][name] = m;
+    ctx.origin("/materials/" + name, p.location());
+    return name;
+}
+
+std::string material_with_alpha(const std::string& name, const Json& alpha, ImportContext& ctx) {
+    // On a blend (pbrt's mix) the alpha goes on the blend itself: pbrt-v4's alpha is the shape's.
+    Json m = ctx.doc()["materials"][name];
+    m["alpha"] = alpha;
+    const std::string copy = ctx.new_material_name(name + " (alpha)");
+    ctx.doc()["materials"][copy] = m;
+    return copy;
+}
+
+}  // namespace candela::pbrt

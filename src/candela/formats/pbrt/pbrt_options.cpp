@@ -1,0 +1,231 @@
+// The rendering options of a pbrt-v4 scene (Camera, Film, PixelFilter, Sampler, Integrator) as
+// candela's camera, film, sampler and integrator, with pbrt-v4's defaults
+// (https://pbrt.org/fileformat-v4): a 1280x720 film, a gaussian filter of radius 1.5, 16 samples
+// per pixel, the path integrator to depth 5, spectral transport.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "candela/formats/pbrt/pbrt_import_context.h"
+
+namespace candela::pbrt {
+namespace {
+
+Json vec_json(const Vec3d& v) { return Json::array({v.x, v.y, v.z}); }
+
+// pbrt's camera space looks along +z with +y up and +x to the image's right; candela's look_at
+// camera puts cross(forward, up) on the right. Where the two agree (the camera transform mirrors
+// space, as most exporters' do) the camera is written as position / look_at / up, which people
+// can read; otherwise as its matrix (`transform`), which keeps pbrt's orientation.
+void write_camera_frame(const Transform& camera_from_world, Json& camera) {
+    const Transform world_from_camera = camera_from_world.inverse();
+    const Vec3d position = world_from_camera.apply_point(Vec3d(0, 0, 0));
+    const Vec3d forward = normalize(world_from_camera.apply_vector(Vec3d(0, 0, 1)));
+    const Vec3d up = normalize(world_from_camera.apply_vector(Vec3d(0, 1, 0)));
+    const Vec3d right = world_from_camera.apply_vector(Vec3d(1, 0, 0));
+    if (dot(cross(forward, up), right) > 0) {
+        camera["position"] = vec_json(position);
+        camera["look_at"] = vec_json(position + forward);
+        camera["up"] = vec_json(up);
+    } else {
+        camera["transform"] = transform_json(world_from_camera);
+    }
+}
+
+void translate_camera(const RenderOptions& o, int width, int height, Json& camera, Json& film, ImportContext& ctx) {
+    std::string type = "perspective";
+    if (o.camera) {
+        const Params& p = *o.camera;
+        const std::string& d = p.directive();
+        type = d.substr(d.find('"') + 1, d.rfind('"') - d.find('"') - 1);
+        if (type != "perspective" && type != "orthographic") {
+            ctx.warn(p.location(), fmt::format("Camera \"{}\" is not supported; rendered with a perspective camera "
+                                               "of the same fov",
+                                               type));
+            type = "perspective";
+        }
+        // The shutter interval is the sensor's exposure time (pbrt-v4's CameraBase).
+        const double open = p.float_or("shutteropen", 0.0), close = p.float_or("shutterclose", 1.0);
+        if (!(close > open)) p.fail(p.find("shutterclose"), "shutterclose must be after shutteropen");
+        if (close - open != 1.0) film["exposure_time"] = close - open;
+        if (const Parameter* s = p.find("screenwindow")) {
+            std::vector<double> w = p.numbers("screenwindow");
+            if (w.size() != 4) p.fail(s, "screenwindow takes 4 numbers: xmin xmax ymin ymax");
+            camera["screen_window"] = w;
+        }
+        if (p.has("frameaspectratio"))
+            ctx.warn(p.find("frameaspectratio")->location,
+                     "frameaspectratio is not supported: the image's aspect ratio is its resolution's");
+        const double lens = p.float_or("lensradius", 0.0);
+        const double focus = p.float_or("focaldistance", 1e6);
+        if (lens < 0) p.fail(p.find("lensradius"), "lensradius must be >= 0");
+        if (!(focus > 0)) p.fail(p.find("focaldistance"), "focaldistance must be > 0");
+        if (lens > 0) {
+            camera["aperture_radius"] = lens;
+            camera["focus_distance"] = focus;
+        }
+        if (type == "perspective") {
+            const double fov = p.float_or("fov", 90.0);
+            if (!(fov > 0 && fov < 180)) p.fail(p.find("fov"), "fov must be in (0, 180) degrees");
+            camera["fov"] = fov;
+        }
+        for (const char* unused : {"lensfile", "aperturediameter", "focusdistance", "mapping"})
+            if (p.has(unused))
+                ctx.warn(p.find(unused)->location, fmt::format("{}: parameter \"{}\" is not supported", d, unused));
+    } else {
+        camera["fov"] = 90.0;
+    }
+    camera["type"] = type;
+    if (type == "perspective") {
+        camera["fov_axis"] = "smaller";  // pbrt's fov spans the shorter image axis
+    } else if (!camera.contains("screen_window")) {
+        // pbrt's default screen window spans [-1, 1] on the shorter axis, in camera-space units.
+        camera["height"] = width >= height ? 2.0 : 2.0 * double(height) / double(width);
+    }
+    write_camera_frame(o.camera_from_world, camera);
+    camera["resolution"] = Json::array({width, height});
+}
+
+void translate_film(const RenderOptions& o, int& width, int& height, Json& film, ImportContext& ctx) {
+    width = 1280;
+    height = 720;
+    if (!o.film) return;
+    const Params& p = *o.film;
+    const std::string& d = p.directive();
+    if (d != "Film \"rgb\"")
+        ctx.warn(p.location(), fmt::format("{}: rendered as an \"rgb\" film (linear sRGB image)", d));
+    const long long w = p.int_or("xresolution", 1280), h = p.int_or("yresolution", 720);
+    if (w < 1 || w > 32768) p.fail(p.find("xresolution"), "xresolution must be in 1 .. 32768");
+    if (h < 1 || h > 32768) p.fail(p.find("yresolution"), "yresolution must be in 1 .. 32768");
+    width = int(w);
+    height = int(h);
+    if (const Parameter* c = p.find("cropwindow")) {
+        std::vector<double> crop = p.numbers("cropwindow");
+        if (crop.size() != 4) p.fail(c, "cropwindow takes 4 numbers: x0 x1 y0 y1");
+        film["crop_window"] = crop;
+    }
+    if (p.has("pixelbounds"))
+        ctx.warn(p.find("pixelbounds")->location, "pixelbounds is not supported (use cropwindow); the whole image is rendered");
+    if (auto name = p.get_string("filename")) film["filename"] = *name;
+    if (auto iso = p.get_float("iso")) film["iso"] = *iso;
+    if (auto wb = p.get_float("whitebalance")) film["white_balance"] = *wb;
+    if (auto sensor = p.get_string("sensor"); sensor && *sensor != "cie1931")
+        ctx.warn(p.find("sensor")->location,
+                 fmt::format("sensor \"{}\" is not supported; the CIE 1931 observer is used", *sensor));
+    if (auto m = p.get_float("maxcomponentvalue"); m && std::isfinite(*m))
+        ctx.warn(p.find("maxcomponentvalue")->location, "maxcomponentvalue (clamping samples) is not supported");
+    p.bool_or("savefp16", true);  // a matter of the output file only
+    p.float_or("diagonal", 35.0);  // only the realistic camera reads it
+}
+
+void translate_filter(const RenderOptions& o, Json& film, ImportContext& ctx) {
+    std::string type = "gaussian";
+    const Params* p = o.filter ? &*o.filter : nullptr;
+    if (p) {
+        const std::string& d = p->directive();
+        type = d.substr(d.find('"') + 1, d.rfind('"') - d.find('"') - 1);
+    }
+    double radius = 1.5;
+    Json filter = Json::object();
+    if (type == "box") {
+        radius = 0.5;
+    } else if (type == "triangle") {
+        radius = 2.0;
+    } else if (type == "gaussian") {
+        filter["sigma"] = p ? p->float_or("sigma", 0.5) : 0.5;
+    } else if (type == "mitchell") {
+        radius = 2.0;
+        filter["B"] = p->float_or("B", 1.0 / 3.0);
+        filter["C"] = p->float_or("C", 1.0 / 3.0);
+    } else if (type == "sinc" || type == "lanczos") {
+        type = "lanczos";
+        radius = 4.0;
+        filter["tau"] = p->float_or("tau", 3.0);
+    } else {
+        ctx.warn(p->location(), fmt::format("PixelFilter \"{}\" is not supported; pbrt-v4's default gaussian is used", type));
+        type = "gaussian";
+        filter["sigma"] = 0.5;
+    }
+    const double xr = p ? p->float_or("xradius", radius) : radius;
+    const double yr = p ? p->float_or("yradius", radius) : radius;
+    if (!(xr > 0) || !(yr > 0)) p->fail(p->find(xr > 0 ? "yradius" : "xradius"), "the filter radius must be > 0");
+    Json out = Json{{"type", type}, {"radius", Json::array({xr, yr})}};
+    for (auto& [k, v] : filter.items()) out[k] = v;
+    film["filter"] = out;
+}
+
+void translate_sampler(const RenderOptions& o, Json& sampler, ImportContext& ctx) {
+    long long spp = 16;
+    std::string type = "sobol";
+    if (o.sampler) {
+        const Params& p = *o.sampler;
+        const std::string& d = p.directive();
+        const std::string pbrt_type = d.substr(d.find('"') + 1, d.rfind('"') - d.find('"') - 1);
+        if (pbrt_type == "stratified") {
+            const long long x = p.int_or("xsamples", 4), y = p.int_or("ysamples", 4);
+            p.bool_or("jitter", true);
+            spp = x * y;
+        } else {
+            spp = p.int_or("pixelsamples", 16);
+        }
+        if (spp < 1 || spp > (1 << 24)) p.fail(p.find("pixelsamples"), "pixelsamples must be in 1 .. 16777216");
+        if (pbrt_type == "independent") {
+            type = "independent";
+        } else if (pbrt_type != "sobol" && pbrt_type != "zsobol" && pbrt_type != "paddedsobol") {
+            ctx.warn(p.location(), fmt::format("{}: rendered with candela's Owen-scrambled Sobol sampler (the same "
+                                               "image, different noise)",
+                                               d));
+        }
+        p.string_or("randomization", "");
+        if (auto seed = p.get_int("seed")) sampler["seed"] = *seed;
+    }
+    sampler["type"] = type;
+    sampler["spp"] = spp;
+    if (o.seed && !sampler.contains("seed")) sampler["seed"] = *o.seed;
+}
+
+void translate_integrator(const RenderOptions& o, Json& integrator, ImportContext& ctx) {
+    long long max_depth = 5;
+    if (o.integrator) {
+        const Params& p = *o.integrator;
+        const std::string& d = p.directive();
+        const std::string type = d.substr(d.find('"') + 1, d.rfind('"') - d.find('"') - 1);
+        if (type != "path" && type != "volpath")
+            ctx.warn(p.location(), fmt::format("{}: rendered with candela's path tracer (NEE + MIS), which converges to "
+                                               "the same image",
+                                               d));
+        max_depth = p.int_or("maxdepth", 5);
+        if (max_depth < 0) p.fail(p.find("maxdepth"), "maxdepth must be >= 0");
+        if (p.bool_or("regularize", false))
+            ctx.warn(p.find("regularize")->location, "regularize is not supported; paths are not regularized");
+        p.string_or("lightsampler", "bvh");  // candela chooses lights by power: the same image
+    }
+    integrator["type"] = "path";
+    // pbrt-v4's maxdepth 0 renders emitters seen directly only; candela's max_depth counts the
+    // same bounces but must be >= 1.
+    if (max_depth == 0)
+        ctx.warn(o.integrator->location(), "maxdepth 0 is rendered as maxdepth 1 (direct light included)");
+    integrator["max_depth"] = std::max<long long>(1, max_depth);
+    integrator["rr_depth"] = 1;  // pbrt-v4's PathIntegrator: Russian roulette once depth > 1
+    integrator["spectral"] = true;
+}
+
+}  // namespace
+
+void translate_options(const RenderOptions& o, ImportContext& ctx) {
+    Json& d = ctx.doc();
+    int width = 1280, height = 720;
+    translate_film(o, width, height, d["film"], ctx);
+    translate_filter(o, d["film"], ctx);
+    translate_camera(o, width, height, d["camera"], d["film"], ctx);
+    translate_sampler(o, d["sampler"], ctx);
+    translate_integrator(o, d["integrator"], ctx);
+    for (const std::optional<Params>* p : {&o.camera, &o.film, &o.filter, &o.sampler, &o.integrator})
+        if (*p) (*p)->report_unused([&](const Location& at, const std::string& m) { ctx.warn(at, m); });
+    if (o.camera) ctx.origin("/camera", o.camera->location());
+    if (o.film) ctx.origin("/film", o.film->location());
+    if (o.sampler) ctx.origin("/sampler", o.sampler->location());
+    if (o.integrator) ctx.origin("/integrator", o.integrator->location());
+}
+
+}  // namespace candela::pbrt

@@ -1,0 +1,234 @@
+// pbrt-v4's shapes as candela's (docs/SCENE_FORMAT.md, "shapes"): triangle meshes (inline ones go
+// to the mesh store), PLY meshes by file, spheres, disks; each with the graphics state's material,
+// area light, orientation and transform. pbrt's orientation rule (the geometric normal flips when
+// ReverseOrientation or a mirroring transform, not both) is candela's too.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "candela/formats/mesh/mesh_loader.h"
+#include "candela/geometry/bilinear_patches.h"
+#include "candela/geometry/loop_subdivision.h"
+#include "candela/formats/pbrt/pbrt_import_context.h"
+#include "candela/math/constants.h"
+
+namespace candela::pbrt {
+namespace {
+
+// True when t is a rotation, a uniform scale and a translation (a sphere stays a sphere); its
+// scale factor in `s`.
+bool is_similarity(const Transform& t, double& s) {
+    const Vec3d x = t.apply_vector(Vec3d(1, 0, 0)), y = t.apply_vector(Vec3d(0, 1, 0)),
+                z = t.apply_vector(Vec3d(0, 0, 1));
+    s = length(x);
+    const double tol = 1e-6 * s;
+    return std::fabs(length(y) - s) <= tol && std::fabs(length(z) - s) <= tol && std::fabs(dot(x, y)) <= tol * s &&
+           std::fabs(dot(y, z)) <= tol * s && std::fabs(dot(x, z)) <= tol * s;
+}
+
+double mesh_area(const TriangleMesh& mesh, const Transform& to_world) {
+    double area = 0;
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        const Vec3d p0 = to_world.apply_point(Vec3d(mesh.positions[mesh.indices[3 * t]]));
+        const Vec3d p1 = to_world.apply_point(Vec3d(mesh.positions[mesh.indices[3 * t + 1]]));
+        const Vec3d p2 = to_world.apply_point(Vec3d(mesh.positions[mesh.indices[3 * t + 2]]));
+        area += 0.5 * length(cross(p1 - p0, p2 - p0));
+    }
+    return area;
+}
+
+TriangleMesh read_triangle_mesh(const Params& p) {
+    const Parameter* P = p.find("P");
+    if (!P) p.fail(nullptr, "trianglemesh: \"point3 P\" is required");
+    const std::vector<double> positions = p.numbers("P", 3);
+    const size_t n = positions.size() / 3;
+    std::vector<double> indices = p.numbers("indices", 3);
+    if (indices.empty()) {
+        if (n != 3) p.fail(P, "trianglemesh: \"integer indices\" is required unless P holds exactly 3 points");
+        indices = {0, 1, 2};
+    }
+    TriangleMesh mesh;
+    mesh.positions.reserve(n);
+    for (size_t i = 0; i < n; ++i)
+        mesh.positions.emplace_back(float(positions[3 * i]), float(positions[3 * i + 1]), float(positions[3 * i + 2]));
+    const Parameter* I = p.find("indices");
+    mesh.indices.reserve(indices.size());
+    for (double v : indices) {
+        if (!(v >= 0 && v < double(n)) || v != std::floor(v))
+            p.fail(I, fmt::format("trianglemesh: index {} is out of range (P has {} points)", v, n));
+        mesh.indices.push_back(uint32_t(v));
+    }
+    if (const Parameter* N = p.find("N")) {
+        const std::vector<double> normals = p.numbers("N", 3);
+        if (normals.size() != positions.size())
+            p.fail(N, fmt::format("trianglemesh: N has {} normals for {} points", normals.size() / 3, n));
+        for (size_t i = 0; i < n; ++i)
+            mesh.normals.emplace_back(float(normals[3 * i]), float(normals[3 * i + 1]), float(normals[3 * i + 2]));
+    }
+    const char* uv_name = p.has("uv") ? "uv" : p.has("st") ? "st" : nullptr;
+    if (uv_name) {
+        const std::vector<double> uvs = p.numbers(uv_name, 2);
+        if (uvs.size() != 2 * n)
+            p.fail(p.find(uv_name), fmt::format("trianglemesh: {} has {} pairs for {} points", uv_name, uvs.size() / 2, n));
+        for (size_t i = 0; i < n; ++i) mesh.uvs.emplace_back(float(uvs[2 * i]), float(uvs[2 * i + 1]));
+    }
+    return mesh;
+}
+
+std::vector<Vec3f> points3(const std::vector<double>& v) {
+    std::vector<Vec3f> out;
+    out.reserve(v.size() / 3);
+    for (size_t i = 0; i + 2 < v.size(); i += 3) out.emplace_back(float(v[i]), float(v[i + 1]), float(v[i + 2]));
+    return out;
+}
+
+std::vector<int> int_indices(const Params& p, const char* name) {
+    std::vector<int> out;
+    for (double v : p.numbers(name)) {
+        if (!(v >= 0 && v <= 2147483647.0)) p.fail(p.find(name), fmt::format("{}: index {} is out of range", p.directive(), v));
+        out.push_back(int(v));
+    }
+    return out;
+}
+
+// Runs a mesh builder whose SceneErrors carry no location, locating them at the directive.
+template <class Build>
+TriangleMesh located(const Params& p, Build&& build) {
+    try {
+        return build();
+    } catch (const SceneError& e) {
+        p.fail(nullptr, fmt::format("{}: {}", p.directive(), e.message()));
+    }
+}
+
+// pbrt-v4's loopsubdiv: `levels` (3) of Loop subdivision of the triangles P / indices.
+TriangleMesh read_loop_subdivision(const Params& p) {
+    if (!p.has("P")) p.fail(nullptr, "loopsubdiv: \"point3 P\" is required");
+    const std::vector<Vec3f> positions = points3(p.numbers("P", 3));
+    const std::vector<int> indices = int_indices(p, "indices");
+    if (indices.empty()) p.fail(nullptr, "loopsubdiv: \"integer indices\" is required");
+    const long long levels = p.int_or("levels", 3);
+    if (levels < 0 || levels > kMaxLoopLevels)
+        p.fail(p.find("levels"), fmt::format("loopsubdiv: levels must be in 0 .. {}", kMaxLoopLevels));
+    return located(p, [&] { return loop_subdivide(positions, indices, int(levels)); });
+}
+
+// pbrt-v4's bilinearmesh: patches of four corners (P / indices, optional N and uv), two triangles each.
+TriangleMesh read_bilinear_mesh(const Params& p) {
+    if (!p.has("P")) p.fail(nullptr, "bilinearmesh: \"point3 P\" is required");
+    const std::vector<Vec3f> positions = points3(p.numbers("P", 3));
+    const std::vector<int> indices = int_indices(p, "indices");
+    const std::vector<Vec3f> normals = points3(p.numbers("N", 3));
+    std::vector<Vec2f> uvs;
+    const std::vector<double> uv = p.numbers("uv", 2);
+    for (size_t i = 0; i + 1 < uv.size(); i += 2) uvs.emplace_back(float(uv[i]), float(uv[i + 1]));
+    return located(p, [&] { return bilinear_patches_to_triangles(positions, indices, normals, uvs); });
+}
+
+// The area light of the graphics state on `shape`; `area` is asked for only when `power` needs it.
+void add_emission(const GraphicsState& state, Json& shape, const std::function<double()>& area, ImportContext& ctx) {
+    if (!state.area_light) return;
+    Params l(state.area_light->params, "AreaLightSource \"diffuse\"", state.area_light->at);
+    Json L = l.colour("L", [&](const Parameter& t) -> std::string {
+        fail(t.location, "AreaLightSource: L cannot be a texture");
+    });
+    double scale = l.float_or("scale", 1.0);
+    const bool two_sided = l.bool_or("twosided", false);
+    if (l.has("filename"))
+        ctx.warn(l.find("filename")->location, "AreaLightSource: an image-textured area light is not supported; L is used");
+    if (auto power = l.get_float("power"); power && *power > 0) {
+        // pbrt-v4's DiffuseAreaLight: power / (pi (2 if two-sided) area), the spectrum at luminance 1.
+        const double k = kPiD * (two_sided ? 2.0 : 1.0) * area();
+        if (!(k > 0)) l.fail(l.find("power"), "AreaLightSource: power on a shape of zero area");
+        scale *= *power / k;
+    }
+    if (!(scale > 0)) {
+        ctx.warn(l.location(), "AreaLightSource: scale 0, the shapes do not emit");
+        return;
+    }
+    shape["emission"] = L.is_null() ? Json(1.0) : L;
+    if (scale != 1) shape["emission_scale"] = scale;
+    if (two_sided) shape["two_sided"] = true;
+    l.report_unused([&](const Location& at, const std::string& m) { ctx.warn(at, m); });
+}
+
+}  // namespace
+
+void translate_shape(const std::string& type, const Params& p, const GraphicsState& state, Json& shapes,
+                     const std::string& shapes_pointer, ImportContext& ctx) {
+    Json shape = Json::object();
+    std::function<double()> area;
+    const Transform& ctm = state.ctm;
+    if (type == "trianglemesh" || type == "plymesh" || type == "loopsubdiv" || type == "bilinearmesh") {
+        std::string file;
+        if (type != "plymesh") {
+            file = ctx.new_mesh_name(type);
+            ctx.meshes()[file] = type == "trianglemesh" ? read_triangle_mesh(p)
+                                 : type == "loopsubdiv" ? read_loop_subdivision(p)
+                                                        : read_bilinear_mesh(p);
+            const TriangleMesh* mesh = &ctx.meshes()[file];
+            area = [mesh, &ctm] { return mesh_area(*mesh, ctm); };
+            if (p.has("S")) ctx.warn(p.find("S")->location, "trianglemesh: per-vertex tangents S are ignored");
+            p.numbers("faceIndices");
+        } else {
+            file = p.string_or("filename", "");
+            if (file.empty()) p.fail(nullptr, "plymesh: \"string filename\" is required");
+            area = [&, file] {
+                const TriangleMesh mesh = load_mesh(ctx.folder() / file);
+                return mesh_area(mesh, ctm);
+            };
+            if (p.has("displacement"))
+                ctx.warn(p.find("displacement")->location, "plymesh: displacement is not supported; ignored");
+            p.float_or("edgelength", 1.0);
+        }
+        shape = Json{{"type", "mesh"}, {"file", file}};
+        if (!ctm.is_identity()) shape["transform"] = transform_json(ctm);
+        if (state.reverse_orientation) shape["reverse_orientation"] = true;
+    } else if (type == "sphere") {
+        const double r = p.float_or("radius", 1.0);
+        if (!(r > 0)) p.fail(p.find("radius"), "sphere: radius must be > 0");
+        if (p.float_or("zmin", -r) > -r || p.float_or("zmax", r) < r || p.float_or("phimax", 360) < 360)
+            ctx.warn(p.location(), "sphere: partial spheres (zmin, zmax, phimax) are rendered whole");
+        double s = 1;
+        if (!is_similarity(ctm, s)) {
+            s = std::cbrt(std::fabs(ctm.determinant()));
+            ctx.warn(p.location(), "sphere: a non-uniform scale (an ellipsoid) is not supported; rendered as a sphere "
+                                   "of the same volume");
+        }
+        const Vec3d c = ctm.apply_point(Vec3d(0, 0, 0));
+        shape = Json{{"type", "sphere"}, {"center", Json::array({c.x, c.y, c.z})}, {"radius", r * s}};
+        if (state.reverse_orientation != ctm.swaps_handedness()) shape["reverse_orientation"] = true;
+        area = [r, s] { return 4 * kPiD * r * r * s * s; };
+    } else if (type == "disk") {
+        const double h = p.float_or("height", 0.0), r = p.float_or("radius", 1.0);
+        if (!(r > 0)) p.fail(p.find("radius"), "disk: radius must be > 0");
+        if (p.float_or("innerradius", 0.0) > 0 || p.float_or("phimax", 360) < 360)
+            ctx.warn(p.location(), "disk: innerradius and phimax are not supported; rendered as a full disk");
+        shape = Json{{"type", "disk"},
+                     {"center", Json::array({0.0, 0.0, h})},
+                     {"normal", Json::array({0.0, 0.0, 1.0})},
+                     {"radius", r}};
+        if (!ctm.is_identity()) shape["transform"] = transform_json(ctm);
+        if (state.reverse_orientation) shape["reverse_orientation"] = true;
+        area = [r, &ctm] {
+            const Vec3d u = ctm.apply_vector(Vec3d(r, 0, 0)), v = ctm.apply_vector(Vec3d(0, r, 0));
+            return kPiD * length(cross(u, v));
+        };
+    } else {
+        ctx.warn(p.location(), fmt::format("Shape \"{}\" is not supported; skipped", type));
+        p.mark_all_used();
+        return;
+    }
+    std::string material = state.material;
+    if (p.has("alpha")) {
+        Json alpha = p.number_or_texture("alpha", [&](const Parameter& t) { return ctx.texture_reference(t, true); });
+        if (!(alpha.is_number() && alpha.get<double>() >= 1))
+            material = material_with_alpha(material, alpha, ctx);
+    }
+    shape["material"] = material;
+    add_emission(state, shape, area, ctx);
+    if (!shapes_pointer.empty()) ctx.origin(fmt::format("{}/{}", shapes_pointer, shapes.size()), p.location());
+    shapes.push_back(std::move(shape));
+}
+
+}  // namespace candela::pbrt
