@@ -112,6 +112,8 @@ std::string pointer_token(const std::string& name) {
     return out;
 }
 
+constexpr size_t kMaxAttributeDepth = 100000;
+
 class Importer final : public Target {
   public:
     Importer(ImportedScene& out, const std::filesystem::path& file) : ctx_(out, file.parent_path()) {
@@ -172,6 +174,10 @@ class Importer final : public Target {
     }
     void reverse_orientation(const Location&) override { state_.reverse_orientation = !state_.reverse_orientation; }
     void attribute_begin(const Location& at) override {
+        // Each level keeps a copy of the graphics state (a few hundred bytes): a bound keeps a
+        // file of a million AttributeBegins from taking gigabytes.
+        if (stack_.size() >= kMaxAttributeDepth)
+            fail(at, fmt::format("AttributeBegin nested deeper than {} levels", kMaxAttributeDepth));
         stack_.push_back({state_, at});
     }
     void attribute_end(const Location& at) override {
@@ -356,11 +362,13 @@ class Importer final : public Target {
     }
 
     void end_of_files() override {
+        // pbrt-v4 stops on these too: a block left open is likely a missing line.
+        if (object_) fail(object_->at, "ObjectBegin without a matching ObjectEnd");
+        if (!stack_.empty()) fail(stack_.back().second, "AttributeBegin without a matching AttributeEnd");
         if (!in_world_) {
             // A file with no WorldBegin still has its options.
             translate_options(options_, ctx_);
         }
-        if (object_) ctx_.warn(object_->at, "ObjectBegin without ObjectEnd");
         ctx_.finish_warnings();
     }
     void warn(const Location& at, const std::string& message) override { ctx_.warn(at, message); }
