@@ -49,6 +49,17 @@ TEST(PbrtInclude, PathsAreRelativeToTheIncludingFileAndLocationsNameTheChain) {
     EXPECT_EQ(t.locations[5].included_from, nullptr);
 }
 
+TEST(PbrtInclude, ANameNotFoundBesideTheIncludingFileIsLookedForBesideTheMainFile) {
+    // parts/a.pbrt includes "parts/b.pbrt", a name relative to the main file's folder (pbrt-v4's
+    // rule), not to its own (where parts/parts/b.pbrt does not exist).
+    RecordingTarget t;
+    parse_file("data/pbrt/main_relative/main.pbrt", t);
+    ASSERT_EQ(t.locations.size(), 2u);
+    EXPECT_EQ(describe(t.locations[1]),
+              "data/pbrt/main_relative/parts/b.pbrt:1:1 (included from data/pbrt/main_relative/parts/a.pbrt:2:1) "
+              "(included from data/pbrt/main_relative/main.pbrt:2:1)");
+}
+
 TEST(PbrtInclude, ChunkSizeChangesNothingAcrossFiles) {
     RecordingTarget whole;
     parse_file("data/pbrt/include_main.pbrt", whole);

@@ -1,7 +1,7 @@
 #pragma once
 // The pbrt-v4 scene-file parser: tokenizes a file as it streams it (bounded memory however large
 // the file), reads directives and their parameter lists, follows Include and Import (paths
-// relative to the including file's folder; a cycle is an error), and calls the Target for each
+// relative to the including file's folder, else to the main file's as pbrt-v4; a cycle is an error), and calls the Target for each
 // directive. Syntax errors throw SceneError located as `file:line:col: message`, with the chain
 // of includes named (pbrt_location.h).
 #include <cstddef>

@@ -49,7 +49,15 @@ void TokenStream::open_main_text(std::string_view text, const fs::path& name) {
 void TokenStream::include(const std::string& name, const Token& directive) {
     const Location at = directive.location();
     if (name.empty()) fail(at, "an empty file name");
-    const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : fs::path(at.file).parent_path() / name;
+    // Relative to the including file's folder; where nothing is there, relative to the main
+    // file's folder, which is where pbrt-v4 looks (its ResolveFilename), so scenes written for
+    // pbrt-v4 whose nested includes name paths from the main folder open too.
+    fs::path path = fs::path(name).is_absolute() ? fs::path(name) : fs::path(at.file).parent_path() / name;
+    if (!fs::path(name).is_absolute() && files_.size() > 1) {
+        std::error_code exists_ec;
+        const fs::path from_main = fs::path(files_.front().origin->file).parent_path() / name;
+        if (!fs::exists(path, exists_ec) && fs::exists(from_main, exists_ec)) path = from_main;
+    }
     const std::string display_name = path.lexically_normal().generic_string();
     if (files_.size() >= size_t(options_.max_include_depth))
         fail(at,
