@@ -54,6 +54,19 @@ TEST(PbrtImporter, DefaultsArePbrtV4s) {
     EXPECT_EQ(d["materials"][shape["material"].get<std::string>()]["albedo"], 0.5);
 }
 
+TEST(PbrtImporter, ScreenWindowAndCropWindowPassThrough) {
+    const ImportedScene s = import(std::string("Camera \"perspective\" \"float fov\" 45 \"float screenwindow\" [-1 0 -0.5 0.5]\n"
+                                               "Film \"rgb\" \"integer xresolution\" 64 \"integer yresolution\" 32 "
+                                               "\"float cropwindow\" [0.25 0.75 0 1]\nWorldBegin\n") +
+                                   kLight);
+    const auto& d = s.document;
+    EXPECT_EQ(d["camera"]["screen_window"], nlohmann::ordered_json::array({-1.0, 0.0, -0.5, 0.5}));
+    EXPECT_FALSE(d["camera"].contains("fov_axis"));
+    EXPECT_EQ(d["film"]["crop_window"], nlohmann::ordered_json::array({0.25, 0.75, 0.0, 1.0}));
+    const Scene scene = load_imported_scene(s, kFile);
+    EXPECT_EQ(scene.camera.width, 64);
+}
+
 TEST(PbrtImporter, TransformsApplyInObjectSpaceFirst) {
     // pbrt post-multiplies the CTM: the directive written last acts on the object first.
     const ImportedScene s = import(std::string("WorldBegin\nTranslate 1 2 3\nScale 2 2 2\n"

@@ -77,7 +77,9 @@ void translate_camera(const RenderOptions& o, int width, int height, Json& camer
     }
     camera["type"] = type;
     if (type == "perspective") {
-        camera["fov_axis"] = "smaller";  // pbrt's fov spans the shorter image axis
+        // pbrt's fov spans the shorter image axis; with a screen window, the window says which
+        // part of the plane at tan(fov / 2) the image is.
+        if (!camera.contains("screen_window")) camera["fov_axis"] = "smaller";
     } else if (!camera.contains("screen_window")) {
         // pbrt's default screen window spans [-1, 1] on the shorter axis, in camera-space units.
         camera["height"] = width >= height ? 2.0 : 2.0 * double(height) / double(width);
