@@ -167,7 +167,11 @@ void merge_defaults(ParameterList& list, const ParameterList& defaults) {
     for (const Parameter& d : defaults) {
         bool present = false;
         for (const Parameter& p : list) present = present || p.name == d.name;
-        if (!present) list.push_back(d);
+        // A default nobody reads is not reported (pbrt-v4 reports only the directive's own).
+        if (!present) {
+            list.push_back(d);
+            list.back().used = true;
+        }
     }
 }
 
