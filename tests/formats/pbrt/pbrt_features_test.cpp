@@ -58,7 +58,7 @@ TEST(PbrtFeatures, EveryFeatureTranslates) {
 
 TEST(PbrtFeatures, TheSceneLoadsAndRendersFinitePixels) {
     Scene scene = load_pbrt_scene(kScene);
-    EXPECT_EQ(scene.instances.size(), 3u);
+    EXPECT_EQ(scene.instances.size(), 4u);  // three posts and the sphere of the blend (a textured amount)
     EXPECT_EQ(scene.output_file, "features.exr");
     scene.camera.width = 16;
     scene.camera.height = 12;

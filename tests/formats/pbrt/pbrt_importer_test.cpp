@@ -144,6 +144,27 @@ TEST(PbrtImporter, ObjectInstancesPlaceTheObjectsShapes) {
     EXPECT_EQ(scene.spheres.size(), 2u);  // the object's, once, and the light
 }
 
+TEST(PbrtImporter, TexturedAndScaledSpheresKeepPbrtsParametrizationThroughInstances) {
+    // pbrt's sphere has its pole on z; candela's on y: a textured sphere becomes an instance of a
+    // sphere turned by 90 degrees about x, and so does an ellipsoid (exact under the instance).
+    const ImportedScene s = import(std::string("WorldBegin\nTexture \"c\" \"spectrum\" \"checkerboard\"\n"
+                                               "Material \"diffuse\" \"texture reflectance\" \"c\"\n"
+                                               "Translate 0 0 4\nShape \"sphere\" \"float radius\" 2\n"
+                                               "Material \"diffuse\"\nScale 1 1 3\nShape \"sphere\"\n") +
+                                   kLight);
+    const auto& shapes = s.document["shapes"];
+    ASSERT_EQ(shapes[0]["type"], "instance");
+    ASSERT_EQ(shapes[1]["type"], "instance");
+    const Scene scene = load_imported_scene(s, kFile);
+    ASSERT_EQ(scene.instances.size(), 2u);
+    const AffineMap& t = scene.instances[0].to_world;
+    // candela's pole (+y) goes to pbrt's (+z), at the translated centre.
+    const Vec3d pole = t.apply_point(Vec3d(0, 2, 0));
+    EXPECT_NEAR(pole.x, 0.0, 1e-6);
+    EXPECT_NEAR(pole.y, 0.0, 1e-6);
+    EXPECT_NEAR(pole.z, 6.0, 1e-6);
+}
+
 TEST(PbrtImporter, ErrorsPointIntoThePbrtFile) {
     EXPECT_NE(error_of("WorldBegin\n\nNamedMaterial \"nope\"\n").find("inline.pbrt:3:1"), std::string::npos)
         << error_of("WorldBegin\n\nNamedMaterial \"nope\"\n");

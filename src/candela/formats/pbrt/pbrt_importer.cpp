@@ -126,6 +126,9 @@ class Importer final : public Target {
         d["materials"] = Json::object();
         d["shapes"] = Json::array();
         d["lights"] = Json::array();
+        // Every section exists from the start: the document is an ordered map (a vector), so a
+        // key added later would move the others while the parts hold references into them.
+        d["objects"] = Json::object();
     }
 
     // --- transforms -----------------------------------------------------------------------
@@ -369,6 +372,7 @@ class Importer final : public Target {
             // A file with no WorldBegin still has its options.
             translate_options(options_, ctx_);
         }
+        if (ctx_.doc()["objects"].empty()) ctx_.doc().erase("objects");
         ctx_.finish_warnings();
     }
     void warn(const Location& at, const std::string& message) override { ctx_.warn(at, message); }

@@ -125,6 +125,33 @@ TriangleMesh read_bilinear_mesh(const Params& p) {
     return located(p, [&] { return bilinear_patches_to_triangles(positions, indices, normals, uvs); });
 }
 
+// Whether a sphere of this material shows its (u, v) or tangent frame: textured parameters,
+// normal or bump maps, anisotropic roughness. Such spheres keep pbrt's parametrization.
+bool needs_sphere_frame(const std::string& material, ImportContext& ctx) {
+    const Json& m = ctx.doc()["materials"][material];
+    if (m.value("type", "") == "blend") return true;
+    const std::string text = m.dump();
+    return text.find("\"texture\"") != std::string::npos || m.contains("normal_map") || m.contains("bump_map") ||
+           (m.contains("roughness") && m["roughness"].is_array());
+}
+
+// An instance of a sphere of radius r at the origin (an object shared by the spheres of the same
+// radius, material and orientation), placed by to_world after turning candela's sphere frame (pole
+// +y, u = 1/4 towards -z) into pbrt-v4's (pole +z, u = 1/4 towards +y): a rotation of 90 degrees
+// about x.
+Json sphere_instance(double r, const std::string& material, bool reversed, const Transform& to_world,
+                     ImportContext& ctx) {
+    const std::string name = fmt::format("sphere {} {}{}", r, material, reversed ? " reversed" : "");
+    Json& objects = ctx.doc()["objects"];
+    if (!objects.contains(name)) {
+        Json sphere{{"type", "sphere"}, {"center", Json::array({0.0, 0.0, 0.0})}, {"radius", r}, {"material", material}};
+        if (reversed) sphere["reverse_orientation"] = true;
+        objects[name] = Json{{"shapes", Json::array({sphere})}};
+    }
+    const Transform frame = Transform::rotate(Vec3d(1, 0, 0), kPiD / 2);
+    return Json{{"type", "instance"}, {"object", name}, {"transform", transform_json(to_world * frame)}};
+}
+
 // The area light of the graphics state on `shape`; `area` is asked for only when `power` needs it.
 void add_emission(const GraphicsState& state, Json& shape, const std::function<double()>& area, ImportContext& ctx) {
     if (!state.area_light) return;
@@ -190,15 +217,31 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
         if (p.float_or("zmin", -r) > -r || p.float_or("zmax", r) < r || p.float_or("phimax", 360) < 360)
             ctx.warn(p.location(), "sphere: partial spheres (zmin, zmax, phimax) are rendered whole");
         double s = 1;
-        if (!is_similarity(ctm, s)) {
-            s = std::cbrt(std::fabs(ctm.determinant()));
-            ctx.warn(p.location(), "sphere: a non-uniform scale (an ellipsoid) is not supported; rendered as a sphere "
-                                   "of the same volume");
-        }
+        const bool similarity = is_similarity(ctm, s);
         const Vec3d c = ctm.apply_point(Vec3d(0, 0, 0));
         shape = Json{{"type", "sphere"}, {"center", Json::array({c.x, c.y, c.z})}, {"radius", r * s}};
-        if (state.reverse_orientation != ctm.swaps_handedness()) shape["reverse_orientation"] = true;
+        // pbrt's front: the outside, flipped by ReverseOrientation or a mirroring transform.
+        const bool reversed = state.reverse_orientation != ctm.swaps_handedness();
+        if (reversed) shape["reverse_orientation"] = true;
+        if (!similarity) {
+            s = std::cbrt(std::fabs(ctm.determinant()));
+            shape["radius"] = r * s;
+        }
         area = [r, s] { return 4 * kPiD * r * r * s * s; };
+        if (!similarity || needs_sphere_frame(state.material, ctx)) {
+            // An ellipsoid, or a sphere whose material reads its surface frame (textures, maps,
+            // anisotropy): an instance of a sphere in pbrt's object space, so that the transform
+            // is exact and (u, v) are pbrt's (pole on z, not candela's y).
+            if (state.area_light || shapes_pointer != "/shapes") {
+                ctx.warn(p.location(), similarity ? "sphere: an emitting or instanced textured sphere keeps candela's "
+                                                    "(u, v) (its pole on y, pbrt-v4's on z)"
+                                                  : "sphere: an emitting or instanced ellipsoid is rendered as a "
+                                                    "sphere of the same volume");
+            } else {
+                shape = sphere_instance(r, state.material, reversed, ctm, ctx);
+                shape.erase("material");
+            }
+        }
     } else if (type == "disk") {
         const double h = p.float_or("height", 0.0), r = p.float_or("radius", 1.0);
         if (!(r > 0)) p.fail(p.find("radius"), "disk: radius must be > 0");
@@ -224,6 +267,13 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
         Json alpha = p.number_or_texture("alpha", [&](const Parameter& t) { return ctx.texture_reference(t, true); });
         if (!(alpha.is_number() && alpha.get<double>() >= 1))
             material = material_with_alpha(material, alpha, ctx);
+    }
+    if (shape["type"] == "instance") {
+        if (material != state.material)
+            ctx.warn(p.location(), "sphere: alpha on a textured or non-uniformly scaled sphere is not supported");
+        if (!shapes_pointer.empty()) ctx.origin(fmt::format("{}/{}", shapes_pointer, shapes.size()), p.location());
+        shapes.push_back(std::move(shape));
+        return;
     }
     shape["material"] = material;
     add_emission(state, shape, area, ctx);
