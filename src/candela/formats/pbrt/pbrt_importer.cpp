@@ -216,7 +216,6 @@ class Importer final : public Target {
     void camera(const std::string& type, ParameterList params, const Location& at) override {
         before_world("Camera", at);
         options_.camera.emplace(std::move(params), fmt::format("Camera \"{}\"", type), at);
-        camera_type_ = type;
         options_.camera_from_world = state_.ctm;
         named_frames_["camera"] = state_.ctm.inverse();
     }
@@ -406,7 +405,6 @@ class Importer final : public Target {
     std::vector<std::pair<GraphicsState, Location>> stack_;
     std::map<std::string, Transform> named_frames_;
     RenderOptions options_;
-    std::string camera_type_;
     bool in_world_ = false;
     bool ignore_transforms_ = false;
     std::string default_material_;

@@ -13,6 +13,13 @@ namespace {
 
 Json vec_json(const Vec3d& v) { return Json::array({v.x, v.y, v.z}); }
 
+// The type a directive names: "perspective" of `Camera "perspective"`.
+std::string directive_type(const Params& p) {
+    const std::string& d = p.directive();
+    const size_t open = d.find('"'), close = d.rfind('"');
+    return open == std::string::npos || close <= open ? std::string() : d.substr(open + 1, close - open - 1);
+}
+
 // pbrt's camera space looks along +z with +y up and +x to the image's right; candela's look_at
 // camera puts cross(forward, up) on the right. Where the two agree (the camera transform mirrors
 // space, as most exporters' do) the camera is written as position / look_at / up, which people
@@ -37,7 +44,7 @@ void translate_camera(const RenderOptions& o, int width, int height, Json& camer
     if (o.camera) {
         const Params& p = *o.camera;
         const std::string& d = p.directive();
-        type = d.substr(d.find('"') + 1, d.rfind('"') - d.find('"') - 1);
+        type = directive_type(p);
         if (type != "perspective" && type != "orthographic") {
             ctx.warn(p.location(), fmt::format("Camera \"{}\" is not supported; rendered with a perspective camera "
                                                "of the same fov",
@@ -124,8 +131,7 @@ void translate_filter(const RenderOptions& o, Json& film, ImportContext& ctx) {
     std::string type = "gaussian";
     const Params* p = o.filter ? &*o.filter : nullptr;
     if (p) {
-        const std::string& d = p->directive();
-        type = d.substr(d.find('"') + 1, d.rfind('"') - d.find('"') - 1);
+        type = directive_type(*p);
     }
     double radius = 1.5;
     Json filter = Json::object();
@@ -162,7 +168,7 @@ void translate_sampler(const RenderOptions& o, Json& sampler, ImportContext& ctx
     if (o.sampler) {
         const Params& p = *o.sampler;
         const std::string& d = p.directive();
-        const std::string pbrt_type = d.substr(d.find('"') + 1, d.rfind('"') - d.find('"') - 1);
+        const std::string pbrt_type = directive_type(p);
         if (pbrt_type == "stratified") {
             const long long x = p.int_or("xsamples", 4), y = p.int_or("ysamples", 4);
             p.bool_or("jitter", true);
@@ -191,7 +197,7 @@ void translate_integrator(const RenderOptions& o, Json& integrator, ImportContex
     if (o.integrator) {
         const Params& p = *o.integrator;
         const std::string& d = p.directive();
-        const std::string type = d.substr(d.find('"') + 1, d.rfind('"') - d.find('"') - 1);
+        const std::string type = directive_type(p);
         if (type != "path" && type != "volpath")
             ctx.warn(p.location(), fmt::format("{}: rendered with candela's path tracer (NEE + MIS), which converges to "
                                                "the same image",
