@@ -109,5 +109,16 @@ TEST(SceneLoaderFilm, BadCropWindowsAreLocatedErrors) {
               "expected an array of 4 numbers [x0, x1, y0, y1] in [0, 1], got [0, 1]");
 }
 
+// `filename` (pbrt-v4's Film "filename") names the default output image; the CLI's -o overrides it
+// (apps/candela/render_command.cpp).
+TEST(SceneLoaderFilm, FilenameIsTheDefaultOutput) {
+    EXPECT_EQ(load_json("{}").output_file, "");
+    EXPECT_EQ(load_json(R"({"film": {"filename": "out/cbox.exr"}})").output_file, "out/cbox.exr");
+    SceneError empty = load_error(R"({"film": {"filename": ""}})");
+    EXPECT_EQ(empty.where().json_pointer, "/film/filename");
+    EXPECT_NE(empty.message().find("an image file name"), std::string::npos) << empty.message();
+    EXPECT_EQ(load_error(R"({"film": {"filename": 3}})").where().json_pointer, "/film/filename");
+}
+
 }  // namespace
 }  // namespace candela
