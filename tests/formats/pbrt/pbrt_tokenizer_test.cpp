@@ -72,6 +72,19 @@ TEST(PbrtTokenizer, UnterminatedStringsAreErrorsAtTheirOpeningQuote) {
     EXPECT_EQ(error_of("\"abc\\"), "t.pbrt:1:1: unterminated string (the file ends inside it)");
 }
 
+// A string's text goes into candela's JSON document, which must be UTF-8 (found by the pbrt fuzz
+// target: a filename of 0xFF bytes made the document's dump throw nlohmann's type_error).
+TEST(PbrtTokenizer, AStringThatIsNotUtf8IsAnErrorAtItsOpeningQuote) {
+    EXPECT_EQ(error_of("Shape \"plymesh\"\n  \"string filename\" \"model\xff.ply\""),
+              "t.pbrt:2:21: a string with an ill-formed UTF-8 byte (0xFF at byte 6 of the string); scene files "
+              "must be UTF-8");
+    EXPECT_NE(error_of("\"\xc0\xaf\""), "");      // overlong '/'
+    EXPECT_NE(error_of("\"\xed\xa0\x80\""), "");  // a surrogate
+    EXPECT_NE(error_of("\"\xe2\x82\""), "");      // cut short
+    EXPECT_EQ(tokens("\"caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80\""),
+              std::vector<std::string>({"s:caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80@1:1"}));
+}
+
 // The same text in chunks of every size from 1 byte up gives the same tokens at the same places:
 // tokens, escapes, comments and line breaks straddle chunk boundaries.
 TEST(PbrtTokenizer, TokensStraddlingChunksAreWhole) {

@@ -134,6 +134,39 @@ void Tokenizer::read_word(Token& out) {
     }
 }
 
+namespace {
+
+// The byte offset of the first byte in `s` that is not part of well-formed UTF-8 (RFC 3629: no
+// overlong forms, no surrogates, nothing past U+10FFFF), or npos. A string's text goes into the
+// JSON document the JSON loader reads, and JSON text is UTF-8.
+std::string hex_byte(char c) {
+    constexpr const char* kDigits = "0123456789ABCDEF";
+    const auto b = static_cast<unsigned char>(c);
+    return {kDigits[b >> 4], kDigits[b & 15]};
+}
+
+size_t first_ill_formed_utf8(const std::string& s) {
+    for (size_t i = 0; i < s.size();) {
+        const auto b = static_cast<unsigned char>(s[i]);
+        size_t n = 0;
+        unsigned char lo = 0x80, hi = 0xBF;  // the range of the byte after the lead
+        if (b < 0x80) n = 0;
+        else if (b >= 0xC2 && b <= 0xDF) n = 1;
+        else if (b >= 0xE0 && b <= 0xEF) n = 2, lo = b == 0xE0 ? 0xA0 : 0x80, hi = b == 0xED ? 0x9F : 0xBF;
+        else if (b >= 0xF0 && b <= 0xF4) n = 3, lo = b == 0xF0 ? 0x90 : 0x80, hi = b == 0xF4 ? 0x8F : 0xBF;
+        else return i;
+        for (size_t k = 1; k <= n; ++k) {
+            if (i + k >= s.size()) return i;
+            const auto c = static_cast<unsigned char>(s[i + k]);
+            if (c < (k == 1 ? lo : 0x80) || c > (k == 1 ? hi : 0xBF)) return i;
+        }
+        i += n + 1;
+    }
+    return std::string::npos;
+}
+
+}  // namespace
+
 void Tokenizer::read_string(Token& out) {
     for (;;) {
         const size_t from = pos_;
@@ -148,6 +181,10 @@ void Tokenizer::read_string(Token& out) {
         if (c == '\n') fail_at(out.line, out.column, "unterminated string (a line break inside it)");
         if (c == '"') {
             ++pos_;
+            if (const size_t bad = first_ill_formed_utf8(out.text); bad != std::string::npos)
+                fail_at(out.line, out.column,
+                        "a string with an ill-formed UTF-8 byte (0x" + hex_byte(out.text[bad]) + " at byte " +
+                            std::to_string(bad + 1) + " of the string); scene files must be UTF-8");
             return;
         }
         if (c == '\\') {
