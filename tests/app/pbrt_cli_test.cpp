@@ -129,7 +129,9 @@ TEST(PbrtCli, MillionDeepAttributeBeginIsRefusedQuickly) {
     EXPECT_EQ(WEXITSTATUS(status), 2) << err;
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
     EXPECT_NE(err.find("AttributeBegin nested deeper than 100000 levels"), std::string::npos) << err;
-    EXPECT_LT(seconds, 3.0);
+    // A guard against a hang or a quadratic walk, not a benchmark: 0.3-0.8 s in release here, a
+    // few times that under ASan on a loaded machine.
+    EXPECT_LT(seconds, 30.0);
     EXPECT_LT(usage.ru_maxrss, 1024L * 1024L) << "peak RSS in KiB";  // under 1 GiB
     fs::remove(scene);
 }
