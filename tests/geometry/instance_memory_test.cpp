@@ -18,6 +18,18 @@
 namespace candela {
 namespace {
 
+#if defined(__SANITIZE_ADDRESS__)
+constexpr uint64_t kAllocatorOverhead = 2;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr uint64_t kAllocatorOverhead = 2;
+#else
+constexpr uint64_t kAllocatorOverhead = 1;
+#endif
+#else
+constexpr uint64_t kAllocatorOverhead = 1;
+#endif
+
 constexpr int kGrid = 224;  // 224 x 224 quads: 100,352 triangles
 constexpr int kInstances = 10000;
 
@@ -97,8 +109,11 @@ TEST(InstanceMemory, TenThousandInstancesCostFarLessThanASecondCopy) {
     // One tree plus a fixed record each (the budget's estimate of an instance bounds what one
     // costs: about 540 B measured, most of it Embree's instance geometry), which for these 10,000 is
     // well under the memory of a second tree (1.55 copies measured).
-    EXPECT_LE(per_instance, instance_memory_bytes());
-    EXPECT_LE(mesh_arrays + forest, one_copy + kInstances * instance_memory_bytes());
+    // Under AddressSanitizer every allocation carries redzones and allocator headers the budget
+    // does not count (CI's sanitizer run measured 791 B per instance): allow for them there.
+    const uint64_t budgeted = instance_memory_bytes() * kAllocatorOverhead;
+    EXPECT_LE(per_instance, budgeted);
+    EXPECT_LE(mesh_arrays + forest, one_copy + kInstances * budgeted);
     EXPECT_LT(mesh_arrays + forest, one_copy * 7 / 4);
 }
 
