@@ -165,6 +165,14 @@ TEST(PbrtImporter, TexturedAndScaledSpheresKeepPbrtsParametrizationThroughInstan
     EXPECT_NEAR(pole.z, 6.0, 1e-6);
 }
 
+TEST(PbrtImporter, ASpotNarrowerThanTheDefaultFalloffWarnsAtTheLight) {
+    // conedeltaangle defaults to 5: under a coneangle of 3 there is no parameter to point at (the
+    // fuzzer found this dereferencing a null parameter).
+    const ImportedScene s = import("WorldBegin\nLightSource \"spot\" \"float coneangle\" 3\n");
+    EXPECT_TRUE(has_warning(s.warnings, "inline.pbrt:2:1: spot: conedeltaangle > coneangle"));
+    EXPECT_EQ(s.document["lights"][0]["cone_delta"], 3.0);
+}
+
 TEST(PbrtImporter, ErrorsPointIntoThePbrtFile) {
     EXPECT_NE(error_of("WorldBegin\n\nNamedMaterial \"nope\"\n").find("inline.pbrt:3:1"), std::string::npos)
         << error_of("WorldBegin\n\nNamedMaterial \"nope\"\n");

@@ -48,7 +48,9 @@ void translate_light(const std::string& type, const Params& p, const Transform& 
                      {"cone_angle", cone},
                      {"cone_delta", std::min(delta, cone)}};
         if (delta > cone)
-            ctx.warn(p.find("conedeltaangle")->location, "spot: conedeltaangle > coneangle; the falloff spans the whole cone");
+            // (conedeltaangle may be the default 5 under a narrower coneangle: no parameter to point at)
+            ctx.warn(p.has("conedeltaangle") ? p.find("conedeltaangle")->location : p.location(),
+                     "spot: conedeltaangle > coneangle; the falloff spans the whole cone");
         scale_and_power(p, light);
     } else if (type == "distant") {
         const Vec3d from = p.get_point3("from").value_or(Vec3d(0, 0, 0));
