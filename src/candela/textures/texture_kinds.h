@@ -67,12 +67,35 @@ struct ImageTexture {
     void for_each_input(F&&) const {}
 };
 
+// What the 2D and 3D checkerboards share: their two colours (pbrt-v4's tex1 and tex2, each maybe
+// a texture, evaluated only where it shows), chosen by the derived board's odd().
+template <class Board>
+struct CheckerColors {
+    ColorParam color0{Rgb(1.0f)};
+    ColorParam color1{Rgb(0.0f)};
+
+    template <class Set>
+    CANDELA_HD Rgb color(const Set& set, const TextureContext& ctx) const {
+        return set.rgb(board().odd(ctx) ? color1 : color0, ctx);
+    }
+    template <class Set>
+    CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
+        return set.number(board().odd(ctx) ? color1 : color0, ctx);
+    }
+    template <class F>
+    void for_each_input(F&& f) const {
+        if (color0.is_textured()) f(color0.texture);
+        if (color1.is_textured()) f(color1.texture);
+    }
+
+  private:
+    CANDELA_HD const Board& board() const { return static_cast<const Board&>(*this); }
+};
+
 // `checkerboard`: color0 where floor(s) + floor(t) is even, color1 where it is odd, (s, t) the
 // transformed uv (pbrt-v4's checkerboard without its antialiasing filter; color0 and color1 are
 // its tex1 and tex2). Each colour may itself be a texture, evaluated only where it shows.
-struct CheckerboardTexture {
-    ColorParam color0{Rgb(1.0f)};
-    ColorParam color1{Rgb(0.0f)};
+struct CheckerboardTexture : CheckerColors<CheckerboardTexture> {
     UvTransform uv;
 
     // Whether (s, t) lies on a color1 square. In float: every float beyond 2^24 is an even
@@ -82,19 +105,6 @@ struct CheckerboardTexture {
         return std::fmod(std::floor(st.x) + std::floor(st.y), 2.0f) != 0.0f;
     }
 
-    template <class Set>
-    CANDELA_HD Rgb color(const Set& set, const TextureContext& ctx) const {
-        return set.rgb(odd(ctx) ? color1 : color0, ctx);
-    }
-    template <class Set>
-    CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
-        return set.number(odd(ctx) ? color1 : color0, ctx);
-    }
-    template <class F>
-    void for_each_input(F&& f) const {
-        if (color0.is_textured()) f(color0.texture);
-        if (color1.is_textured()) f(color1.texture);
-    }
 };
 
 // `scale`: `tex` times the number `scale` (pbrt-v4's scale texture).
@@ -223,9 +233,7 @@ struct TextureSpace {
 // `checkerboard` with `dimension` 3: a solid checkerboard of unit cubes in the texture's space,
 // color0 where floor(x) + floor(y) + floor(z) is even, color1 where it is odd (pbrt-v4's 3D
 // checkerboard over its PointTransformMapping, without the antialiasing filter).
-struct Checkerboard3DTexture {
-    ColorParam color0{Rgb(1.0f)};
-    ColorParam color1{Rgb(0.0f)};
+struct Checkerboard3DTexture : CheckerColors<Checkerboard3DTexture> {
     TextureSpace space;
 
     // Whether the point lies in a color1 cube (the sum in float, as CheckerboardTexture::odd).
@@ -234,19 +242,6 @@ struct Checkerboard3DTexture {
         return std::fmod(std::floor(p.x) + std::floor(p.y) + std::floor(p.z), 2.0f) != 0.0f;
     }
 
-    template <class Set>
-    CANDELA_HD Rgb color(const Set& set, const TextureContext& ctx) const {
-        return set.rgb(odd(ctx) ? color1 : color0, ctx);
-    }
-    template <class Set>
-    CANDELA_HD float number(const Set& set, const TextureContext& ctx) const {
-        return set.number(odd(ctx) ? color1 : color0, ctx);
-    }
-    template <class F>
-    void for_each_input(F&& f) const {
-        if (color0.is_textured()) f(color0.texture);
-        if (color1.is_textured()) f(color1.texture);
-    }
 };
 
 }  // namespace candela
