@@ -14,6 +14,24 @@ Film::Film(int width, int height, std::vector<PixelSum> sums, std::vector<double
     CANDELA_CHECK(weights_.empty() || weights_.size() == sums_.size());
 }
 
+void Film::read_region(const PixelBounds& region, double* out) const {
+    for (int y = region.y0; y < region.y1; ++y)
+        for (int x = region.x0; x < region.x1; ++x) {
+            const size_t i = index(x, y);
+            for (double v : sums_[i]) *out++ = v;
+            if (weighted_) *out++ = weights_[i];
+        }
+}
+
+void Film::write_region(const PixelBounds& region, const double* in) {
+    for (int y = region.y0; y < region.y1; ++y)
+        for (int x = region.x0; x < region.x1; ++x) {
+            const size_t i = index(x, y);
+            for (double& v : sums_[i]) v = *in++;
+            if (weighted_) weights_[i] = *in++;
+        }
+}
+
 Image Film::resolve(uint32_t samples_per_pixel) const {
     Image img(width_, height_);
     if (weighted_) {

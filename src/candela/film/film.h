@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "candela/film/film_settings.h"
 #include "candela/image/image.h"
 #include "candela/math/rgb.h"
 
@@ -57,6 +58,14 @@ class Film {
     double weight(int x, int y) const { return weights_[index(x, y)]; }
     // All weight sums, row-major; empty for an unweighted film.
     const std::vector<double>& weights() const { return weights_; }
+
+    // The doubles the film keeps per pixel: the three sums, then the weight sum for a weighted
+    // film. What checkpoints, shard parts and MPI messages carry for each pixel.
+    int values_per_pixel() const { return weighted_ ? 4 : 3; }
+    // Copies the values of the pixels in `region` (row-major, values_per_pixel() each) to `out`,
+    // which has room for region.width() * region.height() * values_per_pixel() doubles; and back.
+    void read_region(const PixelBounds& region, double* out) const;
+    void write_region(const PixelBounds& region, const double* in);
 
     // Unweighted: the mean over `samples_per_pixel` samples; weighted: each sum divided by its
     // weight sum (0 where that is 0). As floats.

@@ -14,13 +14,12 @@
 #include <utility>
 #include <vector>
 
-#include "candela/camera/camera.h"
 #include "candela/core/error.h"
 #include "candela/film/film.h"
-#include "candela/film/pixel_filter.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/lights/light_set.h"
-#include "candela/render/integrator.h"
+#include "candela/film/pixel_filter.h"
+#include "candela/render/frame_renderer.h"
 #include "candela/render/pass_schedule.h"
 #include "candela/render/progress.h"
 #include "candela/sampling/sampler.h"
@@ -34,60 +33,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-struct Tile {
-    int x0, y0, x1, y1;
-};
-
-std::vector<Tile> make_tiles(int width, int height, int size) {
-    std::vector<Tile> tiles;
-    for (int y = 0; y < height; y += size)
-        for (int x = 0; x < width; x += size)
-            tiles.push_back({x, y, std::min(x + size, width), std::min(y + size, height)});
-    return tiles;
-}
-
-// What each thread counts on its own. Rays are summed once at the end; dropped samples after
-// each complete pass (those of an abandoned pass are not in the image, so they do not count).
-struct ThreadTally {
-    RayCounters rays;
-    uint64_t dropped = 0;
-};
-
-// What every camera sample reads, shared by the render threads (the camera aside: see
-// render_pixels).
-struct SampleContext {
-    const Integrator& integrator;
-    int width;  // of the full image
-    uint64_t seed;
-    SamplerType sampler_type;
-    const PixelFilter& filter;
-    PixelBounds bounds;  // the film's pixels within the full image (the crop window)
-};
-
-// Camera sample `s` of pixel (x, y) of the full image, added to the pixel's running sum (and its
-// weight to the weight sum, for a Weighted filter), or dropped (counted) when it is NaN or Inf: a
-// dropped sample's weight still counts, so it counts as zero as without weights. Its random
-// numbers are a pure function of (pixel, s, seed), so the sum is the same whichever thread
-// computes it and however the samples are split into passes. The filter's request comes first,
-// then the camera's lens point if it has a lens (camera_model.h).
-template <bool Weighted, CameraModel CameraT>
-void take_sample(const SampleContext& c, const CameraT& camera, int x, int y, uint32_t s,
-                 const PixelSampler& pixel_sampler, PixelSum& sum, double& weight_sum, ThreadTally& tally) {
-    Sampler sampler = pixel_sampler.sample(s);
-    const FilterSample f = c.filter.sample(s, sampler.next_vec2f());
-    Vec2f film_pos = Vec2f(float(x), float(y)) + f.position;
-    Rgb L = c.integrator.radiance(camera.generate_ray(film_pos, sampler), sampler, tally.rays);
-    if constexpr (Weighted) weight_sum += double(f.weight);
-    if (!L.is_finite()) {
-        ++tally.dropped;
-        return;
-    }
-    if constexpr (Weighted)
-        add_weighted_to_sum(sum, L, f.weight);
-    else
-        add_to_sum(sum, L);
-}
-
 // A pass's samples [begin, end) for every pixel: each pixel's sum is read from `from`, the pass's
 // samples are added in index order, and the new sum is written to `to`. So `from` keeps the state
 // before the pass until the whole pass is done, and a pass abandoned halfway leaves no trace.
@@ -97,27 +42,17 @@ struct Pass {
     Film* to = nullptr;
 };
 
-// The pass's samples of one tile's pixels, for one kind of camera and filter: the caller
-// dispatches on both once per tile, so the sample loop has no camera or weight branch. Tiles are in
-// film pixels; the camera and the sampler see full-image pixels, so a cropped film's pixels get
-// the rays and random numbers they have in the full image.
-template <bool Weighted, CameraModel CameraT>
-void render_tile(const SampleContext& c, const CameraT& camera, const Tile& tile, const Pass& pass,
-                 ThreadTally& tally) {
-    for (int y = tile.y0; y < tile.y1; ++y) {
-        for (int x = tile.x0; x < tile.x1; ++x) {
-            const int full_x = x + c.bounds.x0, full_y = y + c.bounds.y0;
-            PixelSum sum = pass.from->sum(x, y);
-            double weight_sum = 0.0;
-            if constexpr (Weighted) weight_sum = pass.from->weight(x, y);
-            const PixelSampler pixel_sampler(c.sampler_type,
-                                             uint64_t(full_y) * uint64_t(c.width) + uint64_t(full_x), c.seed);
-            for (uint32_t s = pass.begin; s < pass.end; ++s)
-                take_sample<Weighted>(c, camera, full_x, full_y, s, pixel_sampler, sum, weight_sum, tally);
-            pass.to->sum(x, y) = sum;
-            if constexpr (Weighted) pass.to->weight(x, y) = weight_sum;
-        }
-    }
+// Throws RenderError when `start` cannot continue a render of `frame`: another size, or weight
+// sums where the pixel filter has none or the other way round.
+void check_start_state(const FrameRenderer& frame, const RenderState& start) {
+    const int width = frame.width(), height = frame.height();
+    if (start.film.width() != width || start.film.height() != height)
+        throw RenderError("render: the start state is " + std::to_string(start.film.width()) + "x" +
+                          std::to_string(start.film.height()) + ", the scene " + std::to_string(width) + "x" +
+                          std::to_string(height));
+    if (start.film.weighted() != frame.weighted())
+        throw RenderError(std::string("render: the start state ") + (start.film.weighted() ? "has" : "lacks") +
+                          " the weight sums that the pixel filter " + (frame.weighted() ? "needs" : "does not use"));
 }
 
 }  // namespace
@@ -184,48 +119,32 @@ Film make_film(const Scene& scene) {
     return Film(bounds.width(), bounds.height(), is_tabulated(scene.film.filter.type));
 }
 
+std::vector<Tile> render_tiles(int width, int height, const RenderOptions& options) {
+    if (options.shard.count > 1) return shard_tiles(width, height, options.shard);
+    return make_tiles(width, height, std::max(1, options.tile_size));
+}
+
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     return render(scene, options, RenderState{make_film(scene)});
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& options, RenderState start) {
     RenderResult result;
-    Clock::time_point build_start = Clock::now();
-    Accelerator accel(scene.meshes, scene.spheres, scene.disks, scene.shapes, alpha_cutouts(scene),
-                      Instancing{scene.objects, scene.instances});
-
-    LightSet lights = build_light_set(scene, accel);
-    result.stats.build_seconds = seconds_since(build_start);
-
-    const Camera camera = make_camera(scene.camera);
-    std::unique_ptr<Integrator> integrator = make_integrator(scene, accel, lights);
-    const PixelBounds bounds = render_pixel_bounds(scene);
-    const int width = bounds.width(), height = bounds.height();
-    if (width < 1 || height < 1)
-        throw RenderError("render: the film's crop window covers no pixel of the " + std::to_string(scene.camera.width) +
-                          "x" + std::to_string(scene.camera.height) + " image");
-    if (start.film.width() != width || start.film.height() != height)
-        throw RenderError("render: the start state is " + std::to_string(start.film.width()) + "x" +
-                          std::to_string(start.film.height()) + ", the scene " + std::to_string(width) + "x" +
-                          std::to_string(height));
-    const PixelFilter filter(scene.film.filter);
-    if (start.film.weighted() != filter.weighted())
-        throw RenderError(std::string("render: the start state ") +
-                          (start.film.weighted() ? "has" : "lacks") + " the weight sums that the pixel filter " +
-                          (filter.weighted() ? "needs" : "does not use"));
+    const FrameRenderer frame(scene);
+    result.stats.build_seconds = frame.build_seconds();
+    const int width = frame.width(), height = frame.height();
+    check_start_state(frame, start);
     const auto spp = uint32_t(scene.sampler.spp);
-    const SampleContext context{*integrator, scene.camera.width, scene.sampler.seed, scene.sampler.type, filter,
-                                bounds};
-    const uint64_t pixels = uint64_t(width) * uint64_t(height);
-
     RenderState& state = result.state;
     state = std::move(start);
     const uint32_t start_samples = state.samples_done;
     Film next;  // the second buffer of a pass (see Pass), allocated when there is one
-    std::vector<Tile> tiles = make_tiles(width, height, std::max(1, options.tile_size));
+    const std::vector<Tile> tiles = render_tiles(width, height, options);
+    uint64_t pixels = 0;  // that the tiles cover
+    for (const Tile& tile : tiles) pixels += uint64_t(tile.pixels());
     int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
     result.stats.threads = threads;
-    tbb::enumerable_thread_specific<ThreadTally> tallies;
+    tbb::enumerable_thread_specific<TileTally> tallies;
 
     // Why the pass in flight was abandoned, set by the first tile that notices.
     std::atomic<RenderEnd> abandon{RenderEnd::kComplete};
@@ -250,17 +169,13 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
         arena.execute([&] {
             tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
                 enable_flush_denormals();
-                ThreadTally& tally = tallies.local();
+                TileTally& tally = tallies.local();
                 for (size_t t = r.begin(); t != r.end(); ++t) {
                     if (check_stop()) return;
                     const Tile& tile = tiles[t];
                     uint64_t rays_before = tally.rays.total();
-                    if (filter.weighted())
-                        visit([&](const auto& cam) { render_tile<true>(context, cam, tile, pass, tally); }, camera);
-                    else
-                        visit([&](const auto& cam) { render_tile<false>(context, cam, tile, pass, tally); }, camera);
-                    uint64_t tile_pixels = uint64_t(tile.x1 - tile.x0) * uint64_t(tile.y1 - tile.y0);
-                    progress.advance(tile_pixels * n, tally.rays.total() - rays_before);
+                    frame.render_tile(tile, pass.begin, pass.end, *pass.from, *pass.to, tally);
+                    progress.advance(uint64_t(tile.pixels()) * n, tally.rays.total() - rays_before);
                 }
             }, tbb::simple_partitioner());
         });
@@ -282,12 +197,12 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
                 abandon = RenderEnd::kDeadline;
                 break;
             }
-            if (next.width() != width || next.height() != height) next = Film(width, height, filter.weighted());
+            if (next.width() != width || next.height() != height) next = Film(width, height, frame.weighted());
             const Pass pass{state.samples_done, state.samples_done + n, &state.film, &next};
             const Clock::time_point pass_start = Clock::now();
             run_pass(arena, pass, progress);
             uint64_t pass_dropped = 0;
-            for (ThreadTally& t : tallies) pass_dropped += std::exchange(t.dropped, 0);
+            for (TileTally& t : tallies) pass_dropped += std::exchange(t.dropped, 0);
             if (abandon.load() != RenderEnd::kComplete) break;  // `next` is a mix of tiles: dropped
 
             std::swap(state.film, next);
@@ -301,7 +216,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
     }
     result.end = abandon.load();
     result.stats.render_seconds = seconds_since(render_start);
-    for (const ThreadTally& t : tallies) result.stats.rays += t.rays;
+    for (const TileTally& t : tallies) result.stats.rays += t.rays;
     result.stats.samples = pixels * (state.samples_done - start_samples);
     result.image = state.film.resolve(state.samples_done);
     return result;

@@ -16,6 +16,8 @@
 #include "candela/film/film_settings.h"
 #include "candela/render/ray_counters.h"
 #include "candela/render/render_state.h"
+#include "candela/render/shard.h"
+#include "candela/render/tile.h"
 
 namespace candela {
 
@@ -39,6 +41,9 @@ struct RenderOptions {
     std::function<void(const RenderState&)> on_pass = {};
     double pass_seconds = 2.0;  // about how long a grown pass lasts
     uint32_t pass_spp = 0;      // > 0: passes of exactly this many samples per pixel (tests)
+    // Render only this part of the image (shard.h); the other pixels keep the start state's sums.
+    // A part other than 1/1 cuts tiles of kShardTileSize, whatever tile_size says.
+    Shard shard = {};
 };
 
 // Why render() returned.
@@ -51,7 +56,7 @@ enum class RenderEnd {
 struct RenderStats {
     double build_seconds = 0;   // accelerator and light tables
     double render_seconds = 0;  // sampling only
-    uint64_t samples = 0;       // camera samples taken in complete passes, in this call
+    uint64_t samples = 0;       // camera samples taken in complete passes, in this call (of the shard's pixels)
     uint64_t dropped_samples = 0;  // NaN or Inf samples among them, counted as zero and never written
     RayCounters rays;           // all rays traced, abandoned passes included
     int threads = 0;
@@ -82,6 +87,10 @@ PixelBounds render_pixel_bounds(const Scene& scene);
 // The empty film a render of `scene` starts from: the crop window's size, with weight sums when
 // the pixel filter's samples have weights.
 Film make_film(const Scene& scene);
+
+// The tiles a render of a width x height film with `options` renders: all of them, or those of
+// options.shard.
+std::vector<Tile> render_tiles(int width, int height, const RenderOptions& options);
 
 // Continues `start`, a state of the same scene (e.g. read from a checkpoint), up to
 // scene.sampler.spp samples per pixel; when it already has as many or more, renders nothing and

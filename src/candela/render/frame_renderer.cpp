@@ -1,0 +1,123 @@
+#include "candela/render/frame_renderer.h"
+
+#include <chrono>
+#include <string>
+
+#include "candela/camera/camera.h"
+#include "candela/core/error.h"
+#include "candela/film/film.h"
+#include "candela/film/pixel_filter.h"
+#include "candela/geometry/accelerator.h"
+#include "candela/lights/light_set.h"
+#include "candela/render/integrator.h"
+#include "candela/render/renderer.h"
+#include "candela/sampling/sampler.h"
+#include "candela/scene/scene.h"
+
+namespace candela {
+
+namespace {
+
+// What every camera sample reads, shared by the render threads (the camera aside: see
+// render_pixels).
+struct SampleContext {
+    const Integrator& integrator;
+    int width;  // of the full image
+    uint64_t seed;
+    SamplerType sampler_type;
+    const PixelFilter& filter;
+    PixelBounds bounds;  // the film's pixels within the full image (the crop window)
+};
+
+// Camera sample `s` of pixel (x, y) of the full image, added to the pixel's running sum (and its
+// weight to the weight sum, for a Weighted filter), or dropped (counted) when it is NaN or Inf: a
+// dropped sample's weight still counts, so it counts as zero as without weights. Its random
+// numbers are a pure function of (pixel, s, seed), so the sum is the same whichever thread
+// computes it and however the samples are split into passes. The filter's request comes first,
+// then the camera's lens point if it has a lens (camera_model.h).
+template <bool Weighted, CameraModel CameraT>
+void take_sample(const SampleContext& c, const CameraT& camera, int x, int y, uint32_t s,
+                 const PixelSampler& pixel_sampler, PixelSum& sum, double& weight_sum, TileTally& tally) {
+    Sampler sampler = pixel_sampler.sample(s);
+    const FilterSample f = c.filter.sample(s, sampler.next_vec2f());
+    Vec2f film_pos = Vec2f(float(x), float(y)) + f.position;
+    Rgb L = c.integrator.radiance(camera.generate_ray(film_pos, sampler), sampler, tally.rays);
+    if constexpr (Weighted) weight_sum += double(f.weight);
+    if (!L.is_finite()) {
+        ++tally.dropped;
+        return;
+    }
+    if constexpr (Weighted)
+        add_weighted_to_sum(sum, L, f.weight);
+    else
+        add_to_sum(sum, L);
+}
+
+// The samples [begin, end) of one tile's pixels, for one kind of camera and filter: the caller
+// dispatches on both once per tile, so the sample loop has no camera or weight branch. Tiles are in
+// film pixels; the camera and the sampler see full-image pixels, so a cropped film's pixels get
+// the rays and random numbers they have in the full image.
+template <bool Weighted, CameraModel CameraT>
+void render_pixels(const SampleContext& c, const CameraT& camera, const Tile& tile, uint32_t begin, uint32_t end,
+                   const Film& from, Film& to, TileTally& tally) {
+    for (int y = tile.y0; y < tile.y1; ++y) {
+        for (int x = tile.x0; x < tile.x1; ++x) {
+            const int full_x = x + c.bounds.x0, full_y = y + c.bounds.y0;
+            PixelSum sum = from.sum(x, y);
+            double weight_sum = 0.0;
+            if constexpr (Weighted) weight_sum = from.weight(x, y);
+            const PixelSampler pixel_sampler(c.sampler_type,
+                                             uint64_t(full_y) * uint64_t(c.width) + uint64_t(full_x), c.seed);
+            for (uint32_t s = begin; s < end; ++s)
+                take_sample<Weighted>(c, camera, full_x, full_y, s, pixel_sampler, sum, weight_sum, tally);
+            to.sum(x, y) = sum;
+            if constexpr (Weighted) to.weight(x, y) = weight_sum;
+        }
+    }
+}
+
+}  // namespace
+
+// Built in this order, each reading the ones before.
+struct FrameRenderer::Parts {
+    Accelerator accel;
+    LightSet lights;
+    Camera camera;
+    std::unique_ptr<Integrator> integrator;
+    PixelFilter filter;
+    SampleContext context;
+
+    Parts(const Scene& scene, PixelBounds bounds)
+        : accel(scene.meshes, scene.spheres, scene.disks, scene.shapes, alpha_cutouts(scene),
+                Instancing{scene.objects, scene.instances}),
+          lights(build_light_set(scene, accel)),
+          camera(make_camera(scene.camera)),
+          integrator(make_integrator(scene, accel, lights)),
+          filter(scene.film.filter),
+          context{*integrator, scene.camera.width, scene.sampler.seed, scene.sampler.type, filter, bounds} {}
+};
+
+FrameRenderer::FrameRenderer(const Scene& scene) : bounds_(render_pixel_bounds(scene)) {
+    const auto start = std::chrono::steady_clock::now();
+    parts_ = std::make_unique<Parts>(scene, bounds_);
+    build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (width() < 1 || height() < 1)
+        throw RenderError("render: the film's crop window covers no pixel of the " + std::to_string(scene.camera.width) +
+                          "x" + std::to_string(scene.camera.height) + " image");
+}
+
+FrameRenderer::~FrameRenderer() = default;
+
+bool FrameRenderer::weighted() const { return parts_->filter.weighted(); }
+
+void FrameRenderer::render_tile(const Tile& tile, uint32_t begin, uint32_t end, const Film& from, Film& to,
+                                TileTally& tally) const {
+    const Parts& p = *parts_;
+    if (p.filter.weighted())
+        visit([&](const auto& cam) { render_pixels<true>(p.context, cam, tile, begin, end, from, to, tally); }, p.camera);
+    else
+        visit([&](const auto& cam) { render_pixels<false>(p.context, cam, tile, begin, end, from, to, tally); },
+              p.camera);
+}
+
+}  // namespace candela
