@@ -18,6 +18,7 @@
 
 #include "candela/core/atomic_file.h"
 #include "candela/core/error.h"
+#include "candela/distributed/mpi_launch.h"
 #include "candela/image/image_io.h"
 #include "candela/render/checkpoint.h"
 #include "candela/render/progress.h"
@@ -25,8 +26,18 @@
 #include "candela/scene/content_hash.h"
 #include "candela/scene/enum_names.h"
 #include "candela/formats/scene_file.h"
+#include "cli_exit_codes.h"
 #include "render_command.h"
 #include "stop_signals.h"
+
+#if CANDELA_HAVE_MPI
+#include "candela/distributed/mpi_renderer.h"
+#include "candela/distributed/mpi_session.h"
+#else
+namespace candela {
+class MpiSession;  // never made without MPI: `mpi` is then always null
+}
+#endif
 
 namespace fs = std::filesystem;
 
@@ -130,14 +141,14 @@ void apply_overrides(const RenderArgs& a, Scene& scene) {
 }
 
 // Render statistics as JSON, for scripts (bench/run.sh) that should not parse the summary line.
-void write_stats(const fs::path& file, const Scene& scene, const RenderStats& s, const StartupTimes& t) {
+void write_stats(const fs::path& file, const Scene& scene, const RenderStats& s, const StartupTimes& t, int ranks) {
     std::string json = fmt::format(
-        "{{\"integrator\": \"{}\", \"width\": {}, \"height\": {}, \"spp\": {}, \"threads\": {},\n"
+        "{{\"integrator\": \"{}\", \"width\": {}, \"height\": {}, \"spp\": {}, \"threads\": {}, \"ranks\": {},\n"
         " \"render_seconds\": {:.6f}, \"build_seconds\": {:.6f}, \"samples\": {}, \"dropped_samples\": {},\n"
         " \"load_seconds\": {:.6f}, \"startup_seconds\": {:.6f}, \"peak_rss_bytes\": {},\n"
         " \"rays\": {{\"camera\": {}, \"bounce\": {}, \"shadow\": {}, \"total\": {}}}}}\n",
         integrator_type_name(scene.integrator.type), scene.camera.width, scene.camera.height, scene.sampler.spp,
-        s.threads, s.render_seconds, s.build_seconds, s.samples, s.dropped_samples, t.load_seconds,
+        s.threads, ranks, s.render_seconds, s.build_seconds, s.samples, s.dropped_samples, t.load_seconds,
         t.startup_seconds, peak_rss_bytes(), s.rays.camera, s.rays.bounce, s.rays.shadow, s.rays.total());
     write_contents_atomically(file, json);
 }
@@ -169,9 +180,56 @@ std::string stop_reason(RenderEnd end, int signal, const RenderArgs& a) {
     return "";
 }
 
+#if CANDELA_HAVE_MPI
+// Every rank must have loaded the same scene (the same files on every host), or their tiles would
+// not add up to one image: rank 0 compares the content hashes and ends the job on a difference.
+void check_same_scene(const MpiSession& mpi, uint64_t content_hash) {
+    const std::vector<uint64_t> hashes = mpi.gather(content_hash);
+    for (size_t rank = 1; rank < hashes.size(); ++rank)
+        if (hashes[rank] != hashes[0])
+            bad_flag(fmt::format("rank {} loaded another scene than rank 0 (content hash {:016x}, rank 0's {:016x}): "
+                                 "every rank must read the same scene file and the same files it names",
+                                 rank, hashes[rank], hashes[0]));
+}
+#endif
+
+// The render on this process: alone (`mpi` null), or as one rank of an MPI job, where only rank 0
+// reads a checkpoint, prints and writes files, and the other ranks return the job's exit code.
+int render_on_this_rank(const RenderArgs& a, const MpiSession* mpi, int rank);
+
 }  // namespace
 
 int run_render(const RenderArgs& a) {
+    const std::optional<int> launched = mpi_launch_size();
+#if CANDELA_HAVE_MPI
+    if (launched && *launched != 1) {
+        MpiSession mpi(nullptr, nullptr);
+        if (mpi.size() == 1) return render_on_this_rank(a, nullptr, 0);
+        // An error on one rank ends the whole job at once, with that rank's message.
+        try {
+            return render_on_this_rank(a, &mpi, mpi.rank());
+        } catch (const SceneError& e) {
+            fmt::print(stderr, "candela: error: rank {} of {} ({}): {}\n", mpi.rank(), mpi.size(), mpi.host(), e.what());
+            mpi.abort(kExitBadInput);
+        } catch (const std::exception& e) {
+            fmt::print(stderr, "candela: internal error: rank {} of {} ({}): {}\n", mpi.rank(), mpi.size(), mpi.host(),
+                       e.what());
+            mpi.abort(kExitInternal);
+        }
+    }
+#else
+    if (launched && *launched > 1)
+        bad_flag(fmt::format("this candela was built without MPI, so each of the {} processes mpirun started would "
+                             "render the whole image; install libopenmpi-dev (scripts/setup.sh does) and build again",
+                             *launched));
+#endif
+    return render_on_this_rank(a, nullptr, 0);
+}
+
+namespace {
+
+int render_on_this_rank(const RenderArgs& a, const MpiSession* mpi, int rank) {
+    const bool root = rank == 0;
     using Clock = std::chrono::steady_clock;
     const Clock::time_point started = Clock::now();
     std::vector<fs::path> outputs(a.outputs.begin(), a.outputs.end());
@@ -197,14 +255,18 @@ int run_render(const RenderArgs& a) {
         outputs.push_back(named);
     }
     const fs::path checkpoint = a.checkpoint ? fs::path(*a.checkpoint) : fs::path(outputs.front().string() + ".ckpt");
-    for (const std::string& w : scene.warnings) fmt::print(stderr, "candela: warning: {}\n", w);
+    if (root)
+        for (const std::string& w : scene.warnings) fmt::print(stderr, "candela: warning: {}\n", w);
     apply_overrides(a, scene);
     check_memory(a, scene, limit);
 
     // Everything that must match for a checkpoint to continue this render (after the overrides).
     const RenderIdentity identity = render_identity(scene, scene_content_hash(scene));
+#if CANDELA_HAVE_MPI
+    if (mpi) check_same_scene(*mpi, identity.content_hash);
+#endif
     RenderState start{make_film(scene)};
-    if (a.resume) {
+    if (a.resume && root) {
         Checkpoint resumed = read_checkpoint(*a.resume);
         check_checkpoint_matches(*a.resume, resumed.identity, identity);
         start = std::move(resumed.state);
@@ -215,7 +277,7 @@ int run_render(const RenderArgs& a) {
 
     RenderOptions options;
     options.threads = a.threads.value_or(0);
-    options.progress = isatty(fileno(stderr)) != 0;
+    options.progress = root && isatty(fileno(stderr)) != 0;
     options.stop = [] { return cli::stop_signal() != 0; };
     if (a.time_limit)
         options.deadline = started + std::chrono::duration_cast<Clock::duration>(
@@ -237,10 +299,22 @@ int run_render(const RenderArgs& a) {
 
     cli::install_stop_handlers();
     startup.startup_seconds = seconds_since_start();
-    RenderResult result = render(scene, options, std::move(start));
+    RenderResult result;
+    int stop_signal = cli::stop_signal(), ranks = 1;
+#if CANDELA_HAVE_MPI
+    if (mpi) {
+        MpiRenderResult r = render_mpi(*mpi, scene, MpiRenderOptions{options, [] { return cli::stop_signal(); }},
+                                       std::move(start));
+        if (!root) return r.exit_code;
+        result = std::move(r.result);
+        stop_signal = r.stop_signal;
+        ranks = r.ranks;
+    } else
+#endif
+        result = render(scene, options, std::move(start));
     startup.startup_seconds += result.stats.build_seconds;  // render() builds, then samples
-    const std::string stopped = stop_reason(result.end, cli::stop_signal(), a);
-    const int exit_code = result.end == RenderEnd::kStopped ? 128 + cli::stop_signal() : 0;
+    const std::string stopped = stop_reason(result.end, stop_signal, a);
+    const int exit_code = result.end == RenderEnd::kStopped ? 128 + stop_signal : 0;
     if (result.state.samples_done == 0) {
         // An all-black image would replace a good one of an earlier run: write nothing.
         fmt::print(stderr, "candela: {} before the first pass was complete; nothing written\n", stopped);
@@ -251,7 +325,7 @@ int run_render(const RenderArgs& a) {
     const bool write_ckpt = !stopped.empty() || a.checkpoint || a.checkpoint_every || a.resume;
     if (write_ckpt) write_checkpoint(checkpoint, identity, result.state);
     for (const fs::path& out : outputs) write_image(out, result.image, scene.film);
-    if (a.stats) write_stats(*a.stats, scene, result.stats, startup);
+    if (a.stats) write_stats(*a.stats, scene, result.stats, startup, ranks);
 
     const RenderStats& s = result.stats;
     const uint32_t done = result.state.samples_done;
@@ -262,14 +336,18 @@ int run_render(const RenderArgs& a) {
     if (write_ckpt) outs += ", checkpoint " + checkpoint.string();
     if (!stopped.empty()) outs += fmt::format(" (continue with --resume {})", checkpoint.string());
     const uint64_t dropped = result.state.dropped_samples;
-    fmt::print(stderr, "candela: {}x{}, {} spp, {} in {} ({} build), {}rays ({}rays/s), {} threads{}; {}wrote {}\n",
+    const std::string threads =
+        ranks > 1 ? fmt::format("{} ranks x {} threads", ranks, s.threads) : fmt::format("{} threads", s.threads);
+    fmt::print(stderr, "candela: {}x{}, {} spp, {} in {} ({} build), {}rays ({}rays/s), {}{}; {}wrote {}\n",
                result.image.width, result.image.height, spp, integrator_type_name(scene.integrator.type), format_duration(s.render_seconds),
                format_duration(s.build_seconds), format_count(double(s.rays.total())),
-               format_count(s.render_seconds > 0 ? double(s.rays.total()) / s.render_seconds : 0.0), s.threads,
+               format_count(s.render_seconds > 0 ? double(s.rays.total()) / s.render_seconds : 0.0), threads,
                dropped ? fmt::format(", {} NaN/Inf samples dropped", dropped) : "",
                stopped.empty() ? "" : stopped + "; ", outs);
     return exit_code;
 }
+
+}  // namespace
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
     CLI::App* cmd = app.add_subcommand("render", "Render a scene file to one or more images");

@@ -1,0 +1,513 @@
+#include "candela/distributed/mpi_renderer.h"
+
+#include <sched.h>
+
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "candela/core/error.h"
+#include "candela/distributed/mpi_channel.h"
+#include "candela/distributed/mpi_session.h"
+#include "candela/distributed/tile_messages.h"
+#include "candela/distributed/tile_scheduler.h"
+#include "candela/film/film.h"
+#include "candela/geometry/accelerator.h"
+#include "candela/render/frame_renderer.h"
+#include "candela/render/pass_schedule.h"
+#include "candela/render/progress.h"
+#include "candela/scene/scene.h"
+
+namespace candela {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// How long the communicating thread sleeps when there is nothing to do: short against a tile's
+// milliseconds of work, long against the cost of polling MPI.
+constexpr auto kPollInterval = std::chrono::microseconds(500);
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+[[noreturn]] void protocol_error(const std::string& what) {
+    throw std::runtime_error("MPI render: malformed message: " + what);
+}
+
+int threads_for(const MpiSession& session, const RenderOptions& options) {
+    return options.threads > 0 ? options.threads : default_threads_per_rank(session.local_size());
+}
+
+// Rank 0: the scheduler, its own render threads, and the thread that answers the other ranks.
+class RootRender {
+  public:
+    RootRender(const MpiSession& session, const FrameRenderer& frame, const Scene& scene,
+               const MpiRenderOptions& options, RenderState start)
+        : session_(session), frame_(frame), options_(options), spp_(uint32_t(scene.sampler.spp)),
+          tiles_(render_tiles(frame.width(), frame.height(), options.render)),
+          scheduler_(int(tiles_.size()), session.size(), start.samples_done == 0) {
+        state_ = std::move(start);
+        start_samples_ = state_.samples_done;
+        start_dropped_ = state_.dropped_samples;
+        for (const Tile& tile : tiles_) pixels_ += uint64_t(tile.pixels());
+    }
+
+    MpiRenderResult run() {
+        const int threads = threads_for(session_, options_.render);
+        const Clock::time_point render_start = Clock::now();
+        {
+            ProgressBar progress(pixels_ * (spp_ - std::min(spp_, start_samples_)), options_.render.progress);
+            progress_ = &progress;
+            std::vector<TileTally> tallies(static_cast<size_t>(threads));
+            std::vector<std::thread> workers;
+            for (int i = 0; i < threads; ++i) workers.emplace_back([this, &tally = tallies[size_t(i)]] { render_locally(tally); });
+            serve();
+            {
+                std::lock_guard lock(mutex_);
+                shutdown_ = true;
+            }
+            work_.notify_all();
+            for (std::thread& t : workers) t.join();
+            for (const TileTally& t : tallies) rays_ += t.rays;
+            end_workers();
+            progress_ = nullptr;
+        }
+        MpiRenderResult out;
+        RenderResult& r = out.result;
+        r.end = end_;
+        r.stats.build_seconds = frame_.build_seconds();
+        r.stats.render_seconds = seconds_since(render_start);
+        r.stats.rays = rays_;
+        r.stats.threads = threads;
+        r.stats.passes = passes_;
+        r.stats.samples = pixels_ * (state_.samples_done - start_samples_);
+        r.stats.dropped_samples = state_.dropped_samples - start_dropped_;
+        r.image = state_.film.resolve(state_.samples_done);
+        r.state = std::move(state_);
+        out.stop_signal = stop_signal_;
+        out.exit_code = exit_code();
+        out.ranks = session_.size();
+        out.bytes_sent = channel_.bytes_sent();
+        return out;
+    }
+
+  private:
+    int exit_code() const { return end_ == RenderEnd::kStopped ? 128 + stop_signal_ : 0; }
+
+    // A render thread of rank 0: takes tiles of the pass in flight until told to stop.
+    void render_locally(TileTally& tally) {
+        enable_flush_denormals();
+        std::unique_lock lock(mutex_);
+        while (true) {
+            work_.wait(lock, [&] { return shutdown_ || (pass_active_ && scheduler_.pending() > 0); });
+            if (shutdown_) return;
+            const int tile_index = scheduler_.take(0, 1).front().tile;
+            const Tile tile = tiles_[size_t(tile_index)];
+            const uint32_t begin = pass_begin_, end = pass_end_;
+            lock.unlock();
+            const uint64_t rays_before = tally.rays.total(), dropped_before = tally.dropped;
+            frame_.render_tile(tile, begin, end, state_.film, next_, tally);
+            progress_->advance(uint64_t(tile.pixels()) * (end - begin), tally.rays.total() - rays_before);
+            lock.lock();
+            pass_dropped_ += tally.dropped - dropped_before;
+            scheduler_.done(tile_index, 0);
+            main_.notify_one();
+        }
+    }
+
+    // The answering thread's loop, until the render is complete, stopped or out of time.
+    void serve() {
+        {
+            std::lock_guard lock(mutex_);
+            if (!start_pass()) return;
+        }
+        while (true) {
+            while (std::optional<ReceivedMessage> m = channel_.try_receive(kTagToRoot)) handle(*m);
+            if (end_ == RenderEnd::kComplete) check_stop();
+            if (end_ != RenderEnd::kComplete) return;
+            std::unique_lock lock(mutex_);
+            if (pass_active_ && scheduler_.pass_complete()) {
+                finish_pass();
+                if (!start_pass()) return;
+            }
+            channel_.progress();
+            main_.wait_for(lock, kPollInterval);
+        }
+    }
+
+    void check_stop() {
+        if (options_.render.stop && options_.render.stop()) {
+            stop_signal_ = options_.stop_signal();
+            end_ = RenderEnd::kStopped;
+        } else if (options_.render.deadline && Clock::now() >= *options_.render.deadline) {
+            end_ = RenderEnd::kDeadline;
+        }
+    }
+
+    // Starts the next pass (mutex_ held); false when there is none: all samples are done, or not
+    // one more sample per pixel fits before the deadline.
+    bool start_pass() {
+        if (state_.samples_done >= spp_) return false;
+        std::optional<double> seconds_left;
+        if (options_.render.deadline)
+            seconds_left = std::chrono::duration<double>(*options_.render.deadline - Clock::now()).count();
+        const uint32_t n = next_pass_spp(previous_, spp_ - state_.samples_done, options_.render.pass_seconds,
+                                         seconds_left, options_.render.pass_spp);
+        if (n == 0) {
+            end_ = RenderEnd::kDeadline;
+            return false;
+        }
+        if (next_.width() != frame_.width() || next_.height() != frame_.height())
+            next_ = Film(frame_.width(), frame_.height(), frame_.weighted());
+        pass_begin_ = state_.samples_done;
+        pass_end_ = state_.samples_done + n;
+        ++pass_id_;
+        pass_dropped_ = 0;
+        pass_start_ = Clock::now();
+        scheduler_.start_pass();
+        pass_active_ = true;
+        work_.notify_all();
+        std::vector<std::pair<int, int>> waiting;
+        waiting.swap(waiting_requests_);
+        for (auto [rank, want] : waiting) assign(rank, want);
+        return true;
+    }
+
+    // Every tile of the pass is home (mutex_ held): `next_` is the new state.
+    void finish_pass() {
+        pass_active_ = false;
+        std::swap(state_.film, next_);
+        state_.samples_done = pass_end_;
+        state_.dropped_samples += pass_dropped_;
+        ++passes_;
+        previous_ = {pass_end_ - pass_begin_, seconds_since(pass_start_)};
+        if (options_.render.on_pass) options_.render.on_pass(state_);
+    }
+
+    // Answers a request of `rank` for `want` tiles now, or when the next pass starts (mutex_ held).
+    void assign(int rank, int want) {
+        std::vector<TileScheduler::Assignment> tiles;
+        if (pass_active_) tiles = scheduler_.take(rank, want);
+        if (tiles.empty()) {
+            waiting_requests_.emplace_back(rank, want);
+            return;
+        }
+        MessageWriter w(TileMessageType::kAssign);
+        w.u32(pass_id_);
+        w.u32(pass_begin_);
+        w.u32(pass_end_);
+        w.u32(uint32_t(tiles.size()));
+        for (const TileScheduler::Assignment& a : tiles) {
+            w.u32(uint32_t(a.tile));
+            w.u8(a.send_values ? 1 : 0);
+            if (!a.send_values) continue;
+            const Tile& tile = tiles_[size_t(a.tile)];
+            scratch_.resize(size_t(tile.pixels()) * size_t(state_.film.values_per_pixel()));
+            state_.film.read_region(tile.bounds(), scratch_.data());
+            w.doubles(scratch_.data(), scratch_.size());
+        }
+        channel_.send(rank, kTagToWorker, std::move(w.bytes()));
+    }
+
+    void handle(const ReceivedMessage& m) {
+        MessageReader r(m.bytes);
+        const std::optional<TileMessageType> type = r.type();
+        if (!type) protocol_error("unknown type from rank " + std::to_string(m.source));
+        std::lock_guard lock(mutex_);
+        switch (*type) {
+            case TileMessageType::kRequest: {
+                const uint32_t want = r.u32();
+                if (r.failed() || want == 0) protocol_error("request");
+                assign(m.source, int(std::min<uint32_t>(want, uint32_t(tiles_.size()))));
+                break;
+            }
+            case TileMessageType::kResult: {
+                const uint32_t pass = r.u32(), tile_index = r.u32();
+                const uint64_t dropped = r.u64();
+                const RayCounters rays = r.rays();
+                if (r.failed() || pass != pass_id_ || !pass_active_ || tile_index >= tiles_.size())
+                    protocol_error("result from rank " + std::to_string(m.source));
+                const Tile& tile = tiles_[tile_index];
+                scratch_.resize(size_t(tile.pixels()) * size_t(next_.values_per_pixel()));
+                if (!r.doubles(scratch_.data(), scratch_.size()) || !r.at_end()) protocol_error("result values");
+                next_.write_region(tile.bounds(), scratch_.data());
+                pass_dropped_ += dropped;
+                scheduler_.done(int(tile_index), m.source);
+                progress_->advance(uint64_t(tile.pixels()) * (pass_end_ - pass_begin_), rays.total());
+                break;
+            }
+            case TileMessageType::kStop: {
+                const int signal = r.i32();
+                if (end_ == RenderEnd::kComplete) {
+                    stop_signal_ = signal;
+                    end_ = RenderEnd::kStopped;
+                }
+                break;
+            }
+            default: protocol_error("unexpected message from rank " + std::to_string(m.source));
+        }
+    }
+
+    // Tells every other rank to stop and waits for each one's goodbye with its ray count; what
+    // they send before it (results of an abandoned pass, requests) is dropped.
+    void end_workers() {
+        for (int rank = 1; rank < session_.size(); ++rank) {
+            MessageWriter w(TileMessageType::kEnd);
+            w.i32(exit_code());
+            channel_.send(rank, kTagToWorker, std::move(w.bytes()));
+        }
+        int goodbyes = 0;
+        while (goodbyes < session_.size() - 1) {
+            std::optional<ReceivedMessage> m = channel_.try_receive(kTagToRoot);
+            if (!m) {
+                channel_.progress();
+                std::this_thread::sleep_for(kPollInterval);
+                continue;
+            }
+            MessageReader r(m->bytes);
+            if (r.type() == TileMessageType::kBye) {
+                rays_ += r.rays();
+                ++goodbyes;
+            }
+        }
+        channel_.wait_all();
+    }
+
+    const MpiSession& session_;
+    const FrameRenderer& frame_;
+    const MpiRenderOptions& options_;
+    const uint32_t spp_;
+    const std::vector<Tile> tiles_;
+    uint64_t pixels_ = 0;  // that the tiles cover
+    MpiChannel channel_;
+    ProgressBar* progress_ = nullptr;
+
+    // Shared with the render threads, under mutex_; the films' tiles are each written by one
+    // thread (or the answering thread, for results) between a take and its done.
+    std::mutex mutex_;
+    std::condition_variable work_;  // wakes render threads: a pass started, or shutdown
+    std::condition_variable main_;  // wakes the answering thread: a tile is done
+    TileScheduler scheduler_;
+    RenderState state_;
+    Film next_;
+    uint32_t start_samples_ = 0;
+    uint64_t start_dropped_ = 0;
+    bool pass_active_ = false;
+    bool shutdown_ = false;
+    uint32_t pass_id_ = 0, pass_begin_ = 0, pass_end_ = 0;
+    uint64_t pass_dropped_ = 0;
+    Clock::time_point pass_start_;
+    PassTiming previous_;
+    int passes_ = 0;
+    std::vector<std::pair<int, int>> waiting_requests_;  // (rank, tiles wanted)
+    std::vector<double> scratch_;
+
+    // The answering thread's own.
+    RenderEnd end_ = RenderEnd::kComplete;
+    int stop_signal_ = 0;
+    RayCounters rays_;
+};
+
+// Any other rank: render threads take tiles from a local queue that the communicating thread
+// keeps filled by asking rank 0, rendering each tile in place in the rank's own film (which holds,
+// for each tile, the values this rank last computed or was sent), and the communicating thread
+// sends each result home.
+class WorkerRender {
+  public:
+    WorkerRender(const MpiSession& session, const FrameRenderer& frame, const MpiRenderOptions& options)
+        : session_(session), frame_(frame), options_(options),
+          tiles_(render_tiles(frame.width(), frame.height(), options.render)),
+          film_(frame.width(), frame.height(), frame.weighted()) {}
+
+    MpiRenderResult run() {
+        const int threads = threads_for(session_, options_.render);
+        const int depth = 2 * threads;  // tiles queued or in work: enough to hide a request's latency
+        std::vector<TileTally> tallies(static_cast<size_t>(threads));
+        std::vector<std::thread> workers;
+        for (int i = 0; i < threads; ++i) workers.emplace_back([this, &tally = tallies[size_t(i)]] { render(tally); });
+        std::optional<int> exit_code;
+        bool request_outstanding = false, stop_reported = false;
+        while (!exit_code) {
+            while (std::optional<ReceivedMessage> m = channel_.try_receive(kTagToWorker)) {
+                exit_code = handle(*m);
+                if (exit_code) break;
+                request_outstanding = false;
+            }
+            if (exit_code) break;
+            send_results();
+            if (!stop_reported && options_.stop_signal() != 0) {
+                MessageWriter w(TileMessageType::kStop);
+                w.i32(options_.stop_signal());
+                channel_.send(0, kTagToRoot, std::move(w.bytes()));
+                stop_reported = true;
+            }
+            int in_work = 0;
+            {
+                std::lock_guard lock(mutex_);
+                in_work = int(queue_.size()) + running_;
+            }
+            if (!request_outstanding && !stop_reported && in_work < depth) {
+                MessageWriter w(TileMessageType::kRequest);
+                w.u32(uint32_t(depth - in_work));
+                channel_.send(0, kTagToRoot, std::move(w.bytes()));
+                request_outstanding = true;
+            }
+            channel_.progress();
+            std::unique_lock lock(mutex_);
+            main_.wait_for(lock, kPollInterval);
+        }
+        {
+            std::lock_guard lock(mutex_);
+            shutdown_ = true;
+        }
+        work_.notify_all();
+        for (std::thread& t : workers) t.join();
+        RayCounters rays;
+        for (const TileTally& t : tallies) rays += t.rays;
+        MessageWriter w(TileMessageType::kBye);
+        w.rays(rays);
+        channel_.send(0, kTagToRoot, std::move(w.bytes()));
+        channel_.wait_all();
+
+        MpiRenderResult out;
+        out.exit_code = *exit_code;
+        out.result.end = *exit_code == 0 ? RenderEnd::kComplete : RenderEnd::kStopped;
+        out.result.stats.rays = rays;
+        out.result.stats.threads = threads;
+        out.ranks = session_.size();
+        out.bytes_sent = channel_.bytes_sent();
+        return out;
+    }
+
+  private:
+    struct Job {
+        int tile;
+        uint32_t pass, begin, end;
+    };
+    struct Done {
+        Job job;
+        uint64_t dropped;
+        RayCounters rays;
+    };
+
+    void render(TileTally& tally) {
+        enable_flush_denormals();
+        std::unique_lock lock(mutex_);
+        while (true) {
+            work_.wait(lock, [&] { return shutdown_ || !queue_.empty(); });
+            if (shutdown_) return;
+            const Job job = queue_.front();
+            queue_.pop_front();
+            ++running_;
+            lock.unlock();
+            const TileTally before = tally;
+            frame_.render_tile(tiles_[size_t(job.tile)], job.begin, job.end, film_, film_, tally);
+            RayCounters rays = tally.rays;
+            rays.camera -= before.rays.camera;
+            rays.bounce -= before.rays.bounce;
+            rays.shadow -= before.rays.shadow;
+            lock.lock();
+            --running_;
+            done_.push_back({job, tally.dropped - before.dropped, rays});
+            main_.notify_one();
+        }
+    }
+
+    // An assignment: queues its tiles (after writing the start values sent with them). The end:
+    // returns the job's exit code.
+    std::optional<int> handle(const ReceivedMessage& m) {
+        MessageReader r(m.bytes);
+        const std::optional<TileMessageType> type = r.type();
+        if (type == TileMessageType::kEnd) {
+            const int code = r.i32();
+            if (r.failed()) protocol_error("end");
+            return code;
+        }
+        if (type != TileMessageType::kAssign) protocol_error("unexpected message from rank 0");
+        const uint32_t pass = r.u32(), begin = r.u32(), end = r.u32(), count = r.u32();
+        std::vector<Job> jobs;
+        for (uint32_t i = 0; i < count && !r.failed(); ++i) {
+            const uint32_t tile_index = r.u32();
+            const uint8_t has_values = r.u8();
+            if (r.failed() || tile_index >= tiles_.size()) protocol_error("assignment");
+            if (has_values) {
+                const Tile& tile = tiles_[tile_index];
+                scratch_.resize(size_t(tile.pixels()) * size_t(film_.values_per_pixel()));
+                if (!r.doubles(scratch_.data(), scratch_.size())) protocol_error("assignment values");
+                film_.write_region(tile.bounds(), scratch_.data());
+            }
+            jobs.push_back({int(tile_index), pass, begin, end});
+        }
+        if (r.failed() || !r.at_end()) protocol_error("assignment");
+        {
+            std::lock_guard lock(mutex_);
+            queue_.insert(queue_.end(), jobs.begin(), jobs.end());
+        }
+        work_.notify_all();
+        return std::nullopt;
+    }
+
+    void send_results() {
+        std::vector<Done> done;
+        {
+            std::lock_guard lock(mutex_);
+            done.swap(done_);
+        }
+        for (const Done& d : done) {
+            const Tile& tile = tiles_[size_t(d.job.tile)];
+            MessageWriter w(TileMessageType::kResult);
+            w.u32(d.job.pass);
+            w.u32(uint32_t(d.job.tile));
+            w.u64(d.dropped);
+            w.rays(d.rays);
+            scratch_.resize(size_t(tile.pixels()) * size_t(film_.values_per_pixel()));
+            film_.read_region(tile.bounds(), scratch_.data());
+            w.doubles(scratch_.data(), scratch_.size());
+            channel_.send(0, kTagToRoot, std::move(w.bytes()));
+        }
+    }
+
+    const MpiSession& session_;
+    const FrameRenderer& frame_;
+    const MpiRenderOptions& options_;
+    const std::vector<Tile> tiles_;
+    MpiChannel channel_;
+    std::vector<double> scratch_;  // the communicating thread's
+
+    std::mutex mutex_;
+    std::condition_variable work_, main_;
+    Film film_;  // each tile's region: written by the thread that renders it, or by an assignment
+    std::deque<Job> queue_;
+    std::vector<Done> done_;
+    int running_ = 0;
+    bool shutdown_ = false;
+};
+
+}  // namespace
+
+int default_threads_per_rank(int ranks_on_host) {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    int cores = sched_getaffinity(0, sizeof(set), &set) == 0 ? CPU_COUNT(&set) : 0;
+    if (cores < 1) cores = int(std::max(1u, std::thread::hardware_concurrency()));
+    return std::max(1, cores / std::max(1, ranks_on_host));
+}
+
+MpiRenderResult render_mpi(const MpiSession& session, const Scene& scene, const MpiRenderOptions& options,
+                           RenderState start) {
+    const FrameRenderer frame(scene);
+    if (session.rank() != 0) return WorkerRender(session, frame, options).run();
+    if (start.film.width() != frame.width() || start.film.height() != frame.height() ||
+        start.film.weighted() != frame.weighted())
+        throw RenderError("render: the start state does not fit the scene's film");
+    return RootRender(session, frame, scene, options, std::move(start)).run();
+}
+
+}  // namespace candela
