@@ -303,8 +303,10 @@ int render_on_this_rank(const RenderArgs& a, const MpiSession* mpi, int rank) {
     int stop_signal = cli::stop_signal(), ranks = 1;
 #if CANDELA_HAVE_MPI
     if (mpi) {
-        MpiRenderResult r = render_mpi(*mpi, scene, MpiRenderOptions{options, [] { return cli::stop_signal(); }},
-                                       std::move(start));
+        MpiRenderOptions mpi_options{options, [] { return cli::stop_signal(); }, {}};
+        // Saved before the other ranks are told to stop (one of them may have died: see on_stop).
+        mpi_options.on_stop = [&](const RenderState& state) { write_checkpoint(checkpoint, identity, state); };
+        MpiRenderResult r = render_mpi(*mpi, scene, mpi_options, std::move(start));
         if (!root) return r.exit_code;
         result = std::move(r.result);
         stop_signal = r.stop_signal;

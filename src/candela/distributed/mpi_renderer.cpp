@@ -76,6 +76,8 @@ class RootRender {
             work_.notify_all();
             for (std::thread& t : workers) t.join();
             for (const TileTally& t : tallies) rays_ += t.rays;
+            if (end_ != RenderEnd::kComplete && options_.on_stop && state_.samples_done > start_samples_)
+                options_.on_stop(state_);
             end_workers();
             progress_ = nullptr;
         }

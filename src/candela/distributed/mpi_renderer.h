@@ -32,6 +32,10 @@ struct MpiRenderOptions {
     RenderOptions render;
     // This rank's stop signal (SIGINT, SIGTERM), 0 while it has received none.
     std::function<int()> stop_signal = [] { return 0; };
+    // Rank 0, when the job stops early: called with the state of the last complete pass before
+    // the other ranks are told to stop. A rank that died cannot answer that, and mpirun then ends
+    // the job within a second or two; what this writes (the checkpoint) is saved by then.
+    std::function<void(const RenderState&)> on_stop = {};
 };
 
 struct MpiRenderResult {
