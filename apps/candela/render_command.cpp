@@ -141,14 +141,22 @@ void apply_overrides(const RenderArgs& a, Scene& scene) {
 }
 
 // Render statistics as JSON, for scripts (bench/run.sh) that should not parse the summary line.
-void write_stats(const fs::path& file, const Scene& scene, const RenderStats& s, const StartupTimes& t, int ranks) {
+// What an MPI job adds to the statistics (rank 0's view).
+struct JobStats {
+    int ranks = 1;
+    uint64_t bytes_to_rank0 = 0, bytes_from_rank0 = 0;  // MPI messages' payload
+};
+
+void write_stats(const fs::path& file, const Scene& scene, const RenderStats& s, const StartupTimes& t,
+                 const JobStats& job) {
     std::string json = fmt::format(
         "{{\"integrator\": \"{}\", \"width\": {}, \"height\": {}, \"spp\": {}, \"threads\": {}, \"ranks\": {},\n"
+        " \"passes\": {}, \"mpi_bytes_to_rank0\": {}, \"mpi_bytes_from_rank0\": {},\n"
         " \"render_seconds\": {:.6f}, \"build_seconds\": {:.6f}, \"samples\": {}, \"dropped_samples\": {},\n"
         " \"load_seconds\": {:.6f}, \"startup_seconds\": {:.6f}, \"peak_rss_bytes\": {},\n"
         " \"rays\": {{\"camera\": {}, \"bounce\": {}, \"shadow\": {}, \"total\": {}}}}}\n",
         integrator_type_name(scene.integrator.type), scene.camera.width, scene.camera.height, scene.sampler.spp,
-        s.threads, ranks, s.render_seconds, s.build_seconds, s.samples, s.dropped_samples, t.load_seconds,
+        s.threads, job.ranks, s.passes, job.bytes_to_rank0, job.bytes_from_rank0, s.render_seconds, s.build_seconds, s.samples, s.dropped_samples, t.load_seconds,
         t.startup_seconds, peak_rss_bytes(), s.rays.camera, s.rays.bounce, s.rays.shadow, s.rays.total());
     write_contents_atomically(file, json);
 }
@@ -300,7 +308,8 @@ int render_on_this_rank(const RenderArgs& a, const MpiSession* mpi, int rank) {
     cli::install_stop_handlers();
     startup.startup_seconds = seconds_since_start();
     RenderResult result;
-    int stop_signal = cli::stop_signal(), ranks = 1;
+    int stop_signal = cli::stop_signal();
+    JobStats job;
 #if CANDELA_HAVE_MPI
     if (mpi) {
         MpiRenderOptions mpi_options{options, [] { return cli::stop_signal(); }, {}};
@@ -310,7 +319,7 @@ int render_on_this_rank(const RenderArgs& a, const MpiSession* mpi, int rank) {
         if (!root) return r.exit_code;
         result = std::move(r.result);
         stop_signal = r.stop_signal;
-        ranks = r.ranks;
+        job = {r.ranks, r.bytes_received, r.bytes_sent};
     } else
 #endif
         result = render(scene, options, std::move(start));
@@ -327,7 +336,7 @@ int render_on_this_rank(const RenderArgs& a, const MpiSession* mpi, int rank) {
     const bool write_ckpt = !stopped.empty() || a.checkpoint || a.checkpoint_every || a.resume;
     if (write_ckpt) write_checkpoint(checkpoint, identity, result.state);
     for (const fs::path& out : outputs) write_image(out, result.image, scene.film);
-    if (a.stats) write_stats(*a.stats, scene, result.stats, startup, ranks);
+    if (a.stats) write_stats(*a.stats, scene, result.stats, startup, job);
 
     const RenderStats& s = result.stats;
     const uint32_t done = result.state.samples_done;
@@ -339,7 +348,7 @@ int render_on_this_rank(const RenderArgs& a, const MpiSession* mpi, int rank) {
     if (!stopped.empty()) outs += fmt::format(" (continue with --resume {})", checkpoint.string());
     const uint64_t dropped = result.state.dropped_samples;
     const std::string threads =
-        ranks > 1 ? fmt::format("{} ranks x {} threads", ranks, s.threads) : fmt::format("{} threads", s.threads);
+        job.ranks > 1 ? fmt::format("{} ranks x {} threads", job.ranks, s.threads) : fmt::format("{} threads", s.threads);
     fmt::print(stderr, "candela: {}x{}, {} spp, {} in {} ({} build), {}rays ({}rays/s), {}{}; {}wrote {}\n",
                result.image.width, result.image.height, spp, integrator_type_name(scene.integrator.type), format_duration(s.render_seconds),
                format_duration(s.build_seconds), format_count(double(s.rays.total())),

@@ -22,6 +22,7 @@ std::optional<ReceivedMessage> MpiChannel::try_receive(int tag) {
     int count = 0;
     MPI_Get_count(&status, MPI_BYTE, &count);
     ReceivedMessage m{status.MPI_SOURCE, std::vector<unsigned char>(size_t(count))};
+    bytes_received_ += size_t(count);
     MPI_Recv(m.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     return m;
 }

@@ -37,6 +37,7 @@ class MpiChannel {
     void wait_all();
 
     uint64_t bytes_sent() const { return bytes_sent_; }
+    uint64_t bytes_received() const { return bytes_received_; }
 
   private:
     struct Pending {
@@ -45,6 +46,7 @@ class MpiChannel {
     };
     std::list<Pending> pending_;  // a list: MPI holds the buffers' addresses until completion
     uint64_t bytes_sent_ = 0;
+    uint64_t bytes_received_ = 0;
 };
 
 }  // namespace candela

@@ -97,6 +97,7 @@ class RootRender {
         out.exit_code = exit_code();
         out.ranks = session_.size();
         out.bytes_sent = channel_.bytes_sent();
+        out.bytes_received = channel_.bytes_received();
         return out;
     }
 
@@ -385,6 +386,7 @@ class WorkerRender {
         out.result.stats.threads = threads;
         out.ranks = session_.size();
         out.bytes_sent = channel_.bytes_sent();
+        out.bytes_received = channel_.bytes_received();
         return out;
     }
 

@@ -45,7 +45,8 @@ struct MpiRenderResult {
     int stop_signal = 0;  // the signal that stopped the job, received by any rank; 0 if none
     int exit_code = 0;    // what the job exits with: 128 + stop_signal when stopped, else 0
     int ranks = 1;
-    uint64_t bytes_sent = 0;  // by this rank
+    uint64_t bytes_sent = 0;      // by this rank
+    uint64_t bytes_received = 0;  // by this rank
 };
 
 // Every rank calls it, with the same scene and options; rank 0 passes the state to start from
