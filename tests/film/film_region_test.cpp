@@ -32,7 +32,8 @@ TEST(FilmRegion, ReadsRowMajorWithWeightsAfterTheSums) {
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 5; ++x) {
             const bool inside = x >= 1 && x < 4 && y >= 2;
-            EXPECT_EQ(copy.sum(x, y), inside ? film.sum(x, y) : PixelSum{0, 0, 0}) << x << "," << y;
+            const PixelSum expected = inside ? film.sum(x, y) : PixelSum{0, 0, 0};
+            EXPECT_EQ(copy.sum(x, y), expected) << x << "," << y;
             EXPECT_EQ(copy.weight(x, y), inside ? film.weight(x, y) : 0.0) << x << "," << y;
         }
 }
