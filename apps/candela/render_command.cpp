@@ -246,6 +246,8 @@ int render_on_this_rank(const RenderArgs& a, const MpiSession* mpi, int rank) {
             bad_flag(fmt::format("-o {}: unknown image format \"{}\"; expected one of: .exr, .pfm, .hdr, .png, .ppm",
                                  out.string(), out.extension().string()));
     if (a.threads && *a.threads < 0) bad_flag(fmt::format("--threads: expected an integer >= 0, got {}", *a.threads));
+    if (a.tile_size && (*a.tile_size < 1 || *a.tile_size > 4096))
+        bad_flag(fmt::format("--tile-size: expected an integer in 1..4096, got {}", *a.tile_size));
     if (a.time_limit) seconds_flag("--time-limit", *a.time_limit);
     if (a.checkpoint_every) seconds_flag("--checkpoint-every", *a.checkpoint_every);
 
@@ -285,6 +287,7 @@ int render_on_this_rank(const RenderArgs& a, const MpiSession* mpi, int rank) {
 
     RenderOptions options;
     options.threads = a.threads.value_or(0);
+    if (a.tile_size) options.tile_size = *a.tile_size;
     options.progress = root && isatty(fileno(stderr)) != 0;
     options.stop = [] { return cli::stop_signal() != 0; };
     if (a.time_limit)
@@ -368,7 +371,10 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                            "repeatable. Default: <scene name>.png");
     cmd->add_option("--spp", args.spp, "Samples per pixel (overrides sampler.spp)");
     cmd->add_option("--seed", args.seed, "Random seed (overrides sampler.seed)");
-    cmd->add_option("--threads", args.threads, "Render threads; 0 = all cores (default)");
+    cmd->add_option("--threads", args.threads,
+                    "Render threads; 0 = all cores (default; under MPI: per rank, the host's cores shared by its ranks)");
+    cmd->add_option("--tile-size", args.tile_size,
+                    "Pixels per side of the tiles threads and MPI ranks take (default 16); does not change the image");
     cmd->add_option("--resolution", args.resolution, "Image size WIDTHxHEIGHT (overrides camera.resolution)");
     cmd->add_option("--stats", args.stats, "Also write render statistics (times, samples, rays by kind) as JSON");
     cmd->add_option("--memory-limit", args.memory_limit,

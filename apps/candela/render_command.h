@@ -15,6 +15,7 @@ struct RenderArgs {
     std::optional<int> spp;
     std::optional<uint64_t> seed;
     std::optional<int> threads;
+    std::optional<int> tile_size;  // pixels per tile side
     std::optional<std::string> resolution;
     std::optional<std::string> integrator;
     std::optional<std::string> sampler;

@@ -64,6 +64,7 @@ TEST(Cli, BadFlagsExitTwo) {
     EXPECT_EQ(run_candela("render " + kScene + " --resolution 12by4").exit_code, 2);
     EXPECT_EQ(run_candela("render " + kScene + " --integrator magic").exit_code, 2);
     EXPECT_EQ(run_candela("render " + kScene + " --spp 0").exit_code, 2);
+    EXPECT_EQ(run_candela("render " + kScene + " --tile-size 0").exit_code, 2);
     EXPECT_EQ(run_candela("render " + kScene + " -o out.tiff").exit_code, 2);
     EXPECT_EQ(run_candela("render " + kScene + " --iso 0").exit_code, 2);
     EXPECT_EQ(run_candela("render " + kScene + " --exposure-time -1").exit_code, 2);

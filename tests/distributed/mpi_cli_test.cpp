@@ -125,6 +125,10 @@ TEST(MpiRender, GivesTheBitsOfOneProcessForEveryRankAndThreadCount) {
         // One summary line: the other ranks print nothing.
         EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
     }
+    // Smaller tiles (more of them to share) change nothing either.
+    const CliRun small = run_mpi(3, render_args(dir, "tiles5", "6", 1, {"--tile-size", "5"}), dir / "tiles5.log");
+    ASSERT_EQ(small.exit_code, 0) << small.output;
+    expect_same_images(dir, "tiles5", "one");
 }
 
 TEST(MpiRender, GivesTheBitsOfOneProcessWithAWeightedFilterAndACropWindow) {
