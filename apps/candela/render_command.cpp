@@ -236,7 +236,7 @@ int run_render(const RenderArgs& a) {
 
 namespace {
 
-int render_on_this_rank(const RenderArgs& a, const MpiSession* mpi, int rank) {
+int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* mpi, int rank) {
     const bool root = rank == 0;
     using Clock = std::chrono::steady_clock;
     const Clock::time_point started = Clock::now();
