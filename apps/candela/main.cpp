@@ -10,6 +10,7 @@
 #include "candela/core/error.h"
 #include "cli_exit_codes.h"
 #include "convert_command.h"
+#include "merge_command.h"
 #include "render_command.h"
 
 using namespace candela;
@@ -23,6 +24,8 @@ int main(int argc, char** argv) {
     CLI::App* render_cmd = cli::add_render_command(app, render_args);
     cli::ConvertArgs convert_args;
     CLI::App* convert_cmd = cli::add_convert_command(app, convert_args);
+    cli::MergeArgs merge_args;
+    CLI::App* merge_cmd = cli::add_merge_command(app, merge_args);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -39,6 +42,7 @@ int main(int argc, char** argv) {
     try {
         if (render_cmd->parsed()) return cli::run_render(render_args);
         if (convert_cmd->parsed()) return cli::run_convert(convert_args);
+        if (merge_cmd->parsed()) return cli::run_merge(merge_args);
         return cli::kExitInternal;
     } catch (const SceneError& e) {
         fmt::print(stderr, "candela: error: {}\n", e.what());

@@ -23,6 +23,7 @@
 #include "candela/render/checkpoint.h"
 #include "candela/render/progress.h"
 #include "candela/render/renderer.h"
+#include "candela/render/shard_part.h"
 #include "candela/scene/content_hash.h"
 #include "candela/scene/enum_names.h"
 #include "candela/formats/scene_file.h"
@@ -188,6 +189,37 @@ std::string stop_reason(RenderEnd end, int signal, const RenderArgs& a) {
     return "";
 }
 
+// --shard I/N: the part, after checking the flags that go with it (one -o PART.ckpt, no --checkpoint).
+std::optional<Shard> shard_flag(const RenderArgs& a) {
+    if (!a.shard) {
+        for (const std::string& out : a.outputs)
+            if (fs::path(out).extension() == ".ckpt")
+                bad_flag(fmt::format("-o {}: a part file (.ckpt) is written only with --shard I/N", out));
+        return std::nullopt;
+    }
+    const std::optional<Shard> shard = parse_shard(*a.shard);
+    if (!shard)
+        bad_flag(fmt::format("--shard: expected I/N, part I of N with 1 <= I <= N <= {}, got \"{}\"", kMaxShards,
+                             *a.shard));
+    if (a.outputs.size() != 1 || fs::path(a.outputs.front()).extension() != ".ckpt")
+        bad_flag(fmt::format("--shard {}: writes a part file, not images: give one -o PART.ckpt (candela merge writes "
+                             "the images from the parts){}",
+                             *a.shard, a.outputs.empty() ? "" : fmt::format(", got -o {}", a.outputs.front())));
+    if (a.checkpoint) bad_flag(fmt::format("--checkpoint: with --shard the part file (-o {}) is the checkpoint",
+                                           a.outputs.front()));
+    return shard;
+}
+
+// A film of the scene's size has at least N tiles for --shard I/N, so that no part is empty.
+void check_shard_fits(const Scene& scene, Shard shard) {
+    const PixelBounds film = render_pixel_bounds(scene);
+    const int tiles = shard_tile_count(film.width(), film.height());
+    if (shard.count > tiles)
+        bad_flag(fmt::format("--shard {}/{}: a {}x{} film has {} tile{} of {} pixels, so at most {} part{}",
+                             shard.index, shard.count, film.width(), film.height(), tiles, tiles == 1 ? "" : "s",
+                             kShardTileSize, tiles, tiles == 1 ? "" : "s"));
+}
+
 #if CANDELA_HAVE_MPI
 // Every rank must have loaded the same scene (the same files on every host), or their tiles would
 // not add up to one image: rank 0 compares the content hashes and ends the job on a difference.
@@ -240,7 +272,9 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
     const bool root = rank == 0;
     using Clock = std::chrono::steady_clock;
     const Clock::time_point started = Clock::now();
-    std::vector<fs::path> outputs(a.outputs.begin(), a.outputs.end());
+    const std::optional<Shard> shard = shard_flag(a);
+    std::vector<fs::path> outputs;  // images; none for a shard, whose -o is its part file
+    if (!shard) outputs.assign(a.outputs.begin(), a.outputs.end());
     for (const fs::path& out : outputs)
         if (!is_writable_image_extension(out))
             bad_flag(fmt::format("-o {}: unknown image format \"{}\"; expected one of: .exr, .pfm, .hdr, .png, .ppm",
@@ -257,18 +291,21 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
     Scene scene = load_scene_file(a.scene, LoadOptions{.memory_limit = limit, .meshes = nullptr, .source_map = {}});
     startup.load_seconds = seconds_since_start() - load_start;
     // The scene's own output name (pbrt-v4's Film "filename"), else one made from the scene's.
-    if (outputs.empty()) {
+    if (outputs.empty() && !shard) {
         fs::path named = scene.output_file.empty() ? default_output(a.scene) : fs::path(scene.output_file);
         if (!is_writable_image_extension(named))
             bad_flag(fmt::format("the scene's output file {} has an image format candela cannot write; give -o",
                                  named.string()));
         outputs.push_back(named);
     }
-    const fs::path checkpoint = a.checkpoint ? fs::path(*a.checkpoint) : fs::path(outputs.front().string() + ".ckpt");
+    const fs::path checkpoint = shard        ? fs::path(a.outputs.front())
+                                : a.checkpoint ? fs::path(*a.checkpoint)
+                                               : fs::path(outputs.front().string() + ".ckpt");
     if (root)
         for (const std::string& w : scene.warnings) fmt::print(stderr, "candela: warning: {}\n", w);
     apply_overrides(a, scene);
     check_memory(a, scene, limit);
+    if (shard) check_shard_fits(scene, *shard);
 
     // Everything that must match for a checkpoint to continue this render (after the overrides).
     const RenderIdentity identity = render_identity(scene, scene_content_hash(scene));
@@ -276,10 +313,25 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
     if (mpi) check_same_scene(*mpi, identity.content_hash);
 #endif
     RenderState start{make_film(scene)};
-    if (a.resume && root) {
+    // A shard's checkpoints are its part files.
+    auto save = [&, part = shard ? part_info(scene, *shard) : PartInfo{}](const RenderState& state) {
+        if (shard)
+            write_shard_part(checkpoint, identity, part, state);
+        else
+            write_checkpoint(checkpoint, identity, state);
+    };
+    if (a.resume && root && shard) {
+        const ShardPart resumed = read_shard_part(*a.resume);
+        check_part_matches(*a.resume, resumed, identity, *shard, start.film);
+        put_part_values(resumed, start.film);
+        start.samples_done = resumed.samples_done;
+        start.dropped_samples = resumed.dropped_samples;
+    } else if (a.resume && root) {
         Checkpoint resumed = read_checkpoint(*a.resume);
         check_checkpoint_matches(*a.resume, resumed.identity, identity);
         start = std::move(resumed.state);
+    }
+    if (a.resume && root) {
         const bool nothing_left = start.samples_done >= uint32_t(scene.sampler.spp);
         fmt::print(stderr, "candela: resuming from {}: {} of {} spp done{}\n", *a.resume, start.samples_done,
                    scene.sampler.spp, nothing_left ? ", nothing left to render" : "");
@@ -290,6 +342,7 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
     if (a.tile_size) options.tile_size = *a.tile_size;
     options.progress = root && isatty(fileno(stderr)) != 0;
     options.stop = [] { return cli::stop_signal() != 0; };
+    if (shard) options.shard = *shard;
     if (a.time_limit)
         options.deadline = started + std::chrono::duration_cast<Clock::duration>(
                                          std::chrono::duration<double>(*a.time_limit));
@@ -300,7 +353,7 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
         options.on_pass = [&](const RenderState& state) {
             if (std::chrono::duration<double>(Clock::now() - last_checkpoint).count() < *a.checkpoint_every) return;
             try {
-                write_checkpoint(checkpoint, identity, state);
+                save(state);
             } catch (const SceneError& e) {  // the render goes on; the final write reports for good
                 fmt::print(stderr, "candela: warning: periodic checkpoint not written: {}\n", e.what());
             }
@@ -317,7 +370,7 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
     if (mpi) {
         MpiRenderOptions mpi_options{options, [] { return cli::stop_signal(); }, {}};
         // Saved before the other ranks are told to stop (one of them may have died: see on_stop).
-        mpi_options.on_stop = [&](const RenderState& state) { write_checkpoint(checkpoint, identity, state); };
+        mpi_options.on_stop = [&](const RenderState& state) { save(state); };
         MpiRenderResult r = render_mpi(*mpi, scene, mpi_options, std::move(start));
         if (!root) return r.exit_code;
         result = std::move(r.result);
@@ -336,8 +389,8 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
     }
     // The checkpoint first: it is what a later run needs. Written whenever the render stopped
     // early, and at the end of a render asked for checkpoints (so that it can be taken further).
-    const bool write_ckpt = !stopped.empty() || a.checkpoint || a.checkpoint_every || a.resume;
-    if (write_ckpt) write_checkpoint(checkpoint, identity, result.state);
+    const bool write_ckpt = !stopped.empty() || a.checkpoint || a.checkpoint_every || a.resume || shard;
+    if (write_ckpt) save(result.state);
     for (const fs::path& out : outputs) write_image(out, result.image, scene.film);
     if (a.stats) write_stats(*a.stats, scene, result.stats, startup, job);
 
@@ -347,8 +400,14 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
                                                                 : std::to_string(done);
     std::string outs;
     for (const fs::path& out : outputs) outs += (outs.empty() ? "" : ", ") + out.string();
-    if (write_ckpt) outs += ", checkpoint " + checkpoint.string();
-    if (!stopped.empty()) outs += fmt::format(" (continue with --resume {})", checkpoint.string());
+    if (shard)
+        outs = fmt::format("{} (part {} of {})", checkpoint.string(), shard->index, shard->count);
+    else if (write_ckpt)
+        outs += ", checkpoint " + checkpoint.string();
+    const std::string shard_flags = shard ? fmt::format("--shard {}/{} ", shard->index, shard->count) : "";
+    if (!stopped.empty())
+        outs += fmt::format(" (continue with {}--resume {}{})", shard_flags, checkpoint.string(),
+                            shard ? " -o " + checkpoint.string() : "");
     const uint64_t dropped = result.state.dropped_samples;
     const std::string threads =
         job.ranks > 1 ? fmt::format("{} ranks x {} threads", job.ranks, s.threads) : fmt::format("{} threads", s.threads);
@@ -398,6 +457,9 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                            "Sensor exposure time in seconds (overrides film.exposure_time; default 1)");
     cmd->add_option("--white-balance", args.white_balance,
                            "Make daylight of this temperature (kelvin) white; 0 = none (overrides film.white_balance)");
+    cmd->add_option("--shard", args.shard,
+                    "Render part I of N (I/N, a fixed set of 16-pixel tiles) to a part file -o PART.ckpt; "
+                    "candela merge puts the parts together (docs/CLUSTER.md)");
 
     return cmd;
 }

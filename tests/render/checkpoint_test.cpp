@@ -189,9 +189,9 @@ TEST(Checkpoint, NewerFormatIsRefused) {
     const fs::path file = temp_file("newer.ckpt");
     write_checkpoint(file, identity(), state());
     std::string bytes = read_bytes(file);
-    bytes[8] = 3;  // the format version's low byte
+    bytes[8] = 4;  // the format version's low byte
     write_bytes(file, bytes);
-    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("format version 3; this candela reads versions 1 and 2"),
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("format version 4; this candela reads versions 1 to 3"),
               std::string::npos);
 }
 

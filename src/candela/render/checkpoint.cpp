@@ -2,20 +2,12 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <bit>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <fstream>
-#include <stdexcept>
+#include <functional>
 #include <string_view>
-#include <system_error>
 
-#include "candela/core/atomic_file.h"
 #include "candela/core/error.h"
-#include "candela/core/hash64.h"
+#include "candela/render/checkpoint_codec.h"
 #include "candela/render/renderer.h"
 #include "candela/scene/enum_names.h"
 #include "candela/scene/scene.h"
@@ -25,105 +17,10 @@ namespace candela {
 namespace {
 
 namespace fs = std::filesystem;
+using namespace checkpoint_codec;
 
-constexpr std::string_view kMagic = "CNDLCKPT";
-constexpr uint32_t kFormatVersion = 1;
-constexpr uint32_t kWeightedFormatVersion = 2;  // with weight sums
-constexpr uint32_t kMaxString = 64;
-constexpr int kMaxSide = 32768;  // the scene loader's limit
 constexpr size_t kBytesPerPixel = 3 * 8;
 constexpr size_t kWeightedBytesPerPixel = 4 * 8;
-// The longest header: magic, format version, three names of kMaxString bytes, hash, seed, width,
-// height, samples done, dropped samples.
-constexpr uint64_t kMaxHeaderBytes = 8 + 4 + 3 * (4 + kMaxString) + 8 + 8 + 4 + 4 + 4 + 8;
-
-[[noreturn]] void fail(const fs::path& file, const std::string& message) {
-    throw SceneError(SourceLocation{file.string(), 0, 0, ""}, message);
-}
-
-// Little-endian encoding into a byte string.
-class Writer {
-  public:
-    void u32(uint32_t v) { bytes(v, 4); }
-    void u64(uint64_t v) { bytes(v, 8); }
-    void f64(double v) { u64(std::bit_cast<uint64_t>(v)); }
-    void string(std::string_view s) {
-        u32(uint32_t(s.size()));
-        out.append(s);
-    }
-    std::string out;
-
-  private:
-    void bytes(uint64_t v, int n) {
-        for (int i = 0; i < n; ++i) out.push_back(char((v >> (8 * i)) & 0xff));
-    }
-};
-
-// Little-endian decoding. Reading past the end, or a string longer than kMaxString, fails the
-// reader: it then returns zeros and empty strings, and says why once the header is read.
-class Reader {
-  public:
-    explicit Reader(std::string_view data) : data_(data) {}
-    uint32_t u32() { return uint32_t(bytes(4)); }
-    uint64_t u64() { return bytes(8); }
-    std::string string() {
-        uint32_t n = u32();
-        if (n > kMaxString) overlong_ = true;
-        if (overlong_ || data_.size() - at_ < n) return fail_string();
-        std::string s(data_.substr(at_, n));
-        at_ += n;
-        return s;
-    }
-    bool truncated() const { return truncated_; }
-    bool overlong() const { return overlong_; }
-    size_t position() const { return at_; }
-
-  private:
-    uint64_t bytes(size_t n) {
-        if (truncated_ || overlong_ || data_.size() - at_ < n) {
-            truncated_ = !overlong_;
-            return 0;
-        }
-        uint64_t v = 0;
-        for (size_t i = 0; i < n; ++i) v |= uint64_t(static_cast<unsigned char>(data_[at_ + i])) << (8 * i);
-        at_ += n;
-        return v;
-    }
-    std::string fail_string() {
-        truncated_ = !overlong_;
-        return {};
-    }
-    std::string_view data_;
-    size_t at_ = 0;
-    bool truncated_ = false;
-    bool overlong_ = false;
-};
-
-// The file's size, after checking that it is a readable file.
-uint64_t checkpoint_size(const fs::path& file) {
-    std::error_code ec;
-    if (!fs::exists(file, ec)) fail(file, "checkpoint not found");
-    if (fs::is_directory(file, ec)) fail(file, "is a folder, not a checkpoint file");
-    const uintmax_t size = fs::file_size(file, ec);
-    if (ec) fail(file, "cannot read checkpoint: " + ec.message());
-    return size;
-}
-
-// The first `size` bytes of the file.
-std::string read_bytes(const fs::path& file, uint64_t size) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) fail(file, fmt::format("cannot open checkpoint: {}", std::strerror(errno)));
-    std::string data(size, '\0');
-    in.read(data.data(), std::streamsize(size));
-    if (uint64_t(in.gcount()) != size) fail(file, "cannot read checkpoint: it changed while being read");
-    return data;
-}
-
-uint64_t checksum(std::string_view bytes) {
-    Hash64 hash;
-    hash.add(bytes.data(), bytes.size());
-    return hash.value();
-}
 
 }  // namespace
 
@@ -142,79 +39,42 @@ RenderIdentity render_identity(const Scene& scene, uint64_t content_hash) {
 
 void write_checkpoint(const fs::path& file, const RenderIdentity& identity, const RenderState& state) {
     const Film& film = state.film;
+    RenderIdentity id = identity;
+    id.width = film.width();
+    id.height = film.height();
     Writer w;
-    w.out.append(kMagic);
-    w.u32(film.weighted() ? kWeightedFormatVersion : kFormatVersion);
-    w.string(identity.candela_version);
-    w.string(identity.integrator);
-    w.string(identity.sampler);
-    w.u64(identity.content_hash);
-    w.u64(identity.seed);
-    w.u32(uint32_t(film.width()));
-    w.u32(uint32_t(film.height()));
-    w.u32(state.samples_done);
-    w.u64(state.dropped_samples);
-    // Streamed in blocks, hashed on the way: no second copy of the sums in memory.
-    write_file_atomically(file, [&](const fs::path& temporary) {
-        std::FILE* out = std::fopen(temporary.c_str(), "wb");
-        if (!out) throw std::runtime_error(std::string("cannot create a temporary file: ") + std::strerror(errno));
-        Hash64 hash;
-        int error = 0;  // the first failure's errno
-        auto put = [&](const std::string& bytes) {
-            if (error == 0 && std::fwrite(bytes.data(), 1, bytes.size(), out) != bytes.size())
-                error = errno != 0 ? errno : EIO;
-        };
-        auto flush = [&] {
-            hash.add(w.out.data(), w.out.size());
-            put(w.out);
-            w.out.clear();
-        };
+    write_common_header(w, film.weighted() ? kWeightedFormatVersion : kFormatVersion, id, state.samples_done,
+                        state.dropped_samples);
+    write_checksummed(file, w, [&](Writer& out, const std::function<void()>& flush) {
         for (size_t i = 0; i < film.sums().size(); ++i) {
-            for (double v : film.sums()[i]) w.f64(v);
-            if (film.weighted()) w.f64(film.weights()[i]);
-            if (w.out.size() >= (1 << 16)) flush();
+            for (double v : film.sums()[i]) out.f64(v);
+            if (film.weighted()) out.f64(film.weights()[i]);
+            flush();
         }
-        flush();
-        w.u64(hash.value());
-        put(w.out);
-        if (std::fclose(out) != 0 && error == 0) error = errno;
-        if (error != 0) throw std::runtime_error(std::string("write failed: ") + std::strerror(error));
     });
 }
 
 Checkpoint read_checkpoint(const fs::path& file) {
     // The header first: a damaged or foreign file of any size is refused before it is read whole.
-    const uint64_t size = checkpoint_size(file);
-    std::string data = read_bytes(file, std::min<uint64_t>(size, kMaxHeaderBytes));
-    if (data.compare(0, kMagic.size(), kMagic) != 0) {
-        if (data.size() < kMagic.size() && !data.empty() && kMagic.starts_with(data))
-            fail(file, fmt::format("truncated checkpoint: {} bytes", data.size()));
-        fail(file, data.empty() ? "not a candela checkpoint: the file is empty"
-                                : "not a candela checkpoint: it does not start with \"CNDLCKPT\"");
-    }
+    const uint64_t size = file_size_of(file);
+    std::string data = read_file_start(file, size, kMaxCommonHeaderBytes + 8);
     Reader r(std::string_view(data).substr(kMagic.size()));
-    const uint32_t format = r.u32();
-    if (!r.truncated() && format != kFormatVersion && format != kWeightedFormatVersion)
-        fail(file, fmt::format("checkpoint format version {}; this candela reads versions {} and {}", format,
-                               kFormatVersion, kWeightedFormatVersion));
-    const bool weighted = format == kWeightedFormatVersion;
+    const CommonHeader h = read_common_header(file, r, size);
+    if (h.format == kPartFormatVersion) {
+        const uint32_t index = r.u32(), count = r.u32();
+        fail(file, r.truncated() ? std::string("a shard's part file (format version 3), not a checkpoint of the whole "
+                                               "image: resume it with --shard, or merge it with candela merge")
+                                 : fmt::format("part {} of {} of a shard render, not a checkpoint of the whole image: "
+                                               "resume it with --shard {}/{}, or merge the parts with candela merge",
+                                               index, count, index, count));
+    }
+    const bool weighted = h.format == kWeightedFormatVersion;
     const size_t bytes_per_pixel = weighted ? kWeightedBytesPerPixel : kBytesPerPixel;
     Checkpoint c;
-    RenderIdentity& id = c.identity;
-    id.candela_version = r.string();
-    id.integrator = r.string();
-    id.sampler = r.string();
-    id.content_hash = r.u64();
-    id.seed = r.u64();
-    const uint32_t width = r.u32(), height = r.u32(), samples = r.u32();
-    const uint64_t dropped = r.u64();
-    if (r.overlong()) fail(file, "corrupt checkpoint header: a name longer than any candela writes");
-    if (r.truncated())
-        fail(file, fmt::format("truncated checkpoint: {} bytes, the header alone is longer", size));
-    if (width < 1 || height < 1 || width > uint32_t(kMaxSide) || height > uint32_t(kMaxSide))
-        fail(file, fmt::format("corrupt checkpoint header: resolution {}x{}", width, height));
-    id.width = int(width);
-    id.height = int(height);
+    c.identity = h.identity;
+    const RenderIdentity& id = c.identity;
+    const uint32_t width = uint32_t(id.width), height = uint32_t(id.height), samples = h.samples_done;
+    const uint64_t dropped = h.dropped_samples;
 
     const size_t pixels = size_t(width) * size_t(height);
     const size_t header = kMagic.size() + r.position();
@@ -226,9 +86,7 @@ Checkpoint read_checkpoint(const fs::path& file) {
         fail(file, fmt::format("corrupt checkpoint: {} bytes, {} more than a {}x{} checkpoint has", size,
                                size - expected, width, height));
     data = read_bytes(file, size);
-    const std::string_view contents = std::string_view(data).substr(0, expected - 8);
-    if (Reader(std::string_view(data).substr(expected - 8)).u64() != checksum(contents))
-        fail(file, "corrupt checkpoint: the checksum does not match its contents (the file was damaged or edited)");
+    check_checksum(file, data);
 
     Reader body(std::string_view(data).substr(header, pixels * bytes_per_pixel));
     std::vector<PixelSum> sums(pixels);
@@ -239,8 +97,8 @@ Checkpoint read_checkpoint(const fs::path& file) {
         return v;
     };
     for (size_t i = 0; i < pixels; ++i) {
-        for (double& v : sums[i]) v = finite(std::bit_cast<double>(body.u64()), i);
-        if (weighted) weights[i] = finite(std::bit_cast<double>(body.u64()), i);
+        for (double& v : sums[i]) v = finite(body.f64(), i);
+        if (weighted) weights[i] = finite(body.f64(), i);
     }
     c.state = RenderState{Film(id.width, id.height, std::move(sums), std::move(weights)), samples, dropped};
     return c;
