@@ -1,6 +1,7 @@
 // Stopping and resuming the real program: SIGINT and SIGTERM save the image of the samples done
 // and a checkpoint and exit 130 / 143, --time-limit does the same with exit 0, a second signal
-// quits at once, and --resume then ends with exactly the bytes of an uninterrupted render.
+// quits at once, and --resume then ends with exactly the bytes of an uninterrupted render (also of
+// a shard's part file, stopped at the time limit or by SIGINT after periodic part files).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -170,6 +171,64 @@ TEST(Interrupt, SecondSignalQuitsAtOnceLeavingTheLastCheckpoint) {
     const uint32_t done = read_checkpoint(r.checkpoint()).state.samples_done;
     ASSERT_GT(done, 0u);
     expect_resume_is_bit_identical(dir, r.checkpoint(), done + 2);
+}
+
+// A shard of the Cornell box (part 2 of 3 of a 40x24 film) to `part`, with `more` flags.
+Args shard(const fs::path& part, const std::string& spp, int threads, const Args& more = {}) {
+    Args args = {"render", kCornell, "--resolution", "40x24", "--spp", spp, "--threads", std::to_string(threads),
+                 "--shard", "2/3", "-o", part.string()};
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+}
+
+// Resumes the stopped part to `spp` with one thread and compares its file with that of the part
+// rendered at once on three: byte for byte.
+void expect_part_resume_is_bit_identical(const fs::path& dir, const fs::path& part, uint32_t spp) {
+    const std::string s = std::to_string(spp);
+    CliRun resumed = run(shard(part, s, 1, {"--resume", part.string()}), dir / "resumed.log");
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+    EXPECT_NE(resumed.output.find("resuming from " + part.string()), std::string::npos) << resumed.output;
+    CliRun reference = run(shard(dir / "reference.ckpt", s, 3), dir / "reference.log");
+    ASSERT_EQ(reference.exit_code, 0) << reference.output;
+    const std::string a = read_bytes(part);
+    EXPECT_FALSE(a.empty());
+    EXPECT_TRUE(a == read_bytes(dir / "reference.ckpt")) << "the resumed part differs from the uninterrupted one";
+}
+
+TEST(Interrupt, ShardStoppedAtTheTimeLimitResumesToTheUninterruptedPart) {
+    const fs::path dir = temp_dir("shard_time_limit");
+    const fs::path part = dir / "part-2.ckpt";
+    CliRun r = run(shard(part, kEndless, 2, {"--time-limit", "0.5"}), dir / "stopped.log");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("stopped at the time limit"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("continue with --shard 2/3 --resume " + part.string() + " -o " + part.string()),
+              std::string::npos)
+        << r.output;
+    const uint32_t done = samples_done(r.output);
+    ASSERT_GT(done, 0u) << r.output;
+    // An incomplete part is no part to merge...
+    CliRun merge = run({"merge", part.string(), "-o", (dir / "m.exr").string()}, dir / "merge.log");
+    EXPECT_EQ(merge.exit_code, 2) << merge.output;
+    EXPECT_NE(merge.output.find(part.string() + ": part 2 of 3 is incomplete: " + std::to_string(done) + " of " +
+                                kEndless + " spp done; finish it with candela render SCENE --shard 2/3 --resume"),
+              std::string::npos)
+        << merge.output;
+    // ...but goes on to exactly the uninterrupted part.
+    expect_part_resume_is_bit_identical(dir, part, done + 3);
+}
+
+TEST(Interrupt, ShardStoppedBySigintAfterPeriodicPartFilesResumesToTheUninterruptedPart) {
+    const fs::path dir = temp_dir("shard_sigint");
+    const fs::path part = dir / "part-2.ckpt";
+    ChildProcess p(CANDELA_CLI, shard(part, kEndless, 2, {"--checkpoint-every", "0.1"}), dir / "stopped.log");
+    ASSERT_TRUE(wait_until([&] { return fs::exists(part); }, kTimeout)) << "no periodic part file: " << p.output();
+    p.signal(SIGINT);
+    ASSERT_EQ(p.wait_exit(kTimeout), 130) << p.output();
+    const std::string out = p.output();
+    EXPECT_NE(out.find("stopped by SIGINT"), std::string::npos) << out;
+    const uint32_t done = samples_done(out);
+    ASSERT_GT(done, 0u) << out;
+    expect_part_resume_is_bit_identical(dir, part, done + 2);
 }
 
 // A small scene of its own, so that the test can change it.
