@@ -4,11 +4,14 @@
 //
 // Format versions 1 and 2: version 2 is written for films with weight sums (film/film.h: the
 // tabulated pixel filters) and differs only in the sums, which then have a fourth value per pixel,
-// its weight sum. Integers are unsigned little-endian; a string is a u32 byte count (at most
-// 64) and its bytes; sums are IEEE 754 binary64, little-endian.
+// its weight sum. Version 3 is a shard's part file (shard_part.h, docs/CLUSTER.md): this header,
+// then the shard, target spp, tile size, values per pixel, film flags and output settings, then
+// only the part's pixels; read_checkpoint refuses it (resume it with --shard, merge it with
+// candela merge), read_shard_part reads it. Integers are unsigned little-endian; a string is a
+// u32 byte count (at most 64) and its bytes; sums are IEEE 754 binary64, little-endian.
 //
 //   magic            8 bytes  "CNDLCKPT"
-//   format version   u32      1, or 2 for a film with weight sums
+//   format version   u32      1, or 2 for a film with weight sums (3: a part file)
 //   candela version  string   CANDELA_VERSION of the program that wrote it
 //   integrator       string   its name (path, bsdf, ...)
 //   sampler          string   its name (independent, sobol)
@@ -58,9 +61,9 @@ RenderIdentity render_identity(const Scene& scene, uint64_t content_hash);
 // it cannot be written.
 void write_checkpoint(const std::filesystem::path& file, const RenderIdentity& identity, const RenderState& state);
 
-// Reads a checkpoint. A missing, unreadable, foreign (bad magic), newer-format, truncated or
-// corrupt (checksum, sizes, non-finite sums) file throws SceneError naming the file and what is
-// wrong.
+// Reads a checkpoint (version 1 or 2). A missing, unreadable, foreign (bad magic), newer-format,
+// truncated or corrupt (checksum, sizes, non-finite sums) file, or a shard's part file (version
+// 3), throws SceneError naming the file and what is wrong.
 Checkpoint read_checkpoint(const std::filesystem::path& file);
 
 // Throws SceneError naming `file` and the first thing in which the checkpoint's identity differs

@@ -21,7 +21,7 @@
 //   gamma            f32   film.gamma
 //   pixel count      u64   the part's pixels: the sum of its tiles' pixels
 //   values           f64 x values per pixel x pixel count: the part's tiles in shard_tiles
-//                          order, each tile's pixels row-major, each pixel's values as
+//                          order (row-major), each tile's pixels row-major, each pixel's values as
 //                          Film::read_region gives them (r g b sums, then the weight sum)
 //   checksum         u64   Hash64 (core/hash64.h) of every byte before it
 //
