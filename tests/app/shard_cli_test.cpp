@@ -1,10 +1,14 @@
 // Shards through the program: `candela render --shard I/N -o part-I.ckpt` for I = 1..N and then
 // `candela merge` write the bytes of one `candela render` (.exr and .png, N = 1, 2, 5, a box
 // filter and a weighted one); bad --shard values, resumes of the wrong file and every kind of
-// merge refusal are one line on stderr and exit 2.
+// merge refusal are one line on stderr and exit 2; scripts/slurm-shards.sh, run as Slurm would
+// run it (a stand-in sbatch), writes the render's bytes too.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -215,6 +219,55 @@ TEST(ShardCli, MergeRefusalsAreOneLineAndExitTwo) {
     expect_one_line_error({"merge", p[0], p[1], p[2], "-o", (dir / "m.tiff").string()}, dir,
                           "-o " + (dir / "m.tiff").string() + ": unknown image format");
     EXPECT_FALSE(fs::exists(out));
+}
+
+// Runs `command` with bash; its exit status and output.
+CliRun run_bash(const std::string& command) {
+    const std::string cmd = "bash -c '" + command + "' 2>&1";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    EXPECT_NE(pipe, nullptr);
+    std::string out;
+    std::array<char, 4096> buf;
+    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+TEST(ShardCli, SlurmScriptRendersAndMergesTheRendersBytes) {
+    const fs::path dir = temp_dir("slurm");
+    const std::string script = std::string(CANDELA_SOURCE_DIR) + "/scripts/slurm-shards.sh";
+    ASSERT_EQ(run_bash("bash -n " + script).exit_code, 0);
+    // sbatch records what it is asked to submit and answers a job id, as `sbatch --parsable` does.
+    fs::create_directories(dir / "bin");
+    std::ofstream(dir / "bin" / "sbatch") << "#!/usr/bin/env bash\nprintf \"%s\\n\" \"$*\" >> sbatch.log\necho 4242\n";
+    fs::permissions(dir / "bin" / "sbatch", fs::perms::owner_all);
+    const std::string env = "cd " + dir.string() + " && PATH=" + (dir / "bin").string() + ":$PATH CANDELA=" +
+                            CANDELA_CLI + " SHARDS=3 ";
+    const std::string args = " " + kCornell + " frame.exr frame.png -- --spp 1 --resolution 40x24";
+    const CliRun submit = run_bash(env + "bash " + script + args);
+    ASSERT_EQ(submit.exit_code, 0) << submit.output;
+    EXPECT_NE(submit.output.find("submitted job array 4242 (3 shards) and merge job 4242"), std::string::npos)
+        << submit.output;
+    const std::string log = read_bytes(dir / "sbatch.log");
+    EXPECT_NE(log.find("--array=1-3 "), std::string::npos) << log;
+    EXPECT_NE(log.find("--dependency=afterok:4242"), std::string::npos) << log;
+    // The array's tasks, then the merge job's wrapped command line.
+    for (int i = 1; i <= 3; ++i) {
+        const CliRun task = run_bash(env + "SLURM_ARRAY_TASK_ID=" + std::to_string(i) + " bash " + script + args);
+        ASSERT_EQ(task.exit_code, 0) << task.output;
+    }
+    const CliRun merge = run_bash(env + "eval \"$(sed -n \"s/.*--wrap=//p\" sbatch.log)\"");
+    ASSERT_EQ(merge.exit_code, 0) << merge.output;
+    EXPECT_NE(merge.output.find("merged 3 parts of a 40x24 render"), std::string::npos) << merge.output;
+    const CliRun whole = run({"render", kCornell, "--spp", "1", "--resolution", "40x24", "-o",
+                              (dir / "whole.exr").string(), "-o", (dir / "whole.png").string()},
+                             dir / "whole.log");
+    ASSERT_EQ(whole.exit_code, 0) << whole.output;
+    for (const char* ext : {".exr", ".png"}) {
+        const std::string a = read_bytes(dir / (std::string("frame") + ext));
+        EXPECT_FALSE(a.empty()) << ext;
+        EXPECT_TRUE(a == read_bytes(dir / (std::string("whole") + ext))) << ext;
+    }
 }
 
 }  // namespace
