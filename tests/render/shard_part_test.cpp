@@ -230,6 +230,26 @@ TEST(ShardPart, EveryCorruptByteIsAClearError) {
     }
 }
 
+TEST(ShardPart, HugeClaimedSizeIsRefusedWithoutAllocating) {
+    // A header claiming a 32768 x 32768 film: its pixel count no longer fits the file (truncated)
+    // or the checksum no longer matches; found before any tile list or film is made.
+    const fs::path dir = temp_dir("huge");
+    const fs::path file = dir / "part.ckpt";
+    write_shard_part(file, identity(), info(Shard{2, 3}), state(false));
+    std::string bytes = read_bytes(file);
+    const size_t width_at = 8 + 4 + (4 + 5) + (4 + 4) + (4 + 11) + 8 + 8;
+    for (size_t i : {width_at, width_at + 4}) {
+        bytes[i] = 0;
+        bytes[i + 1] = char(0x80);  // 32768
+    }
+    write_bytes(file, bytes);
+    EXPECT_NE(error_of([&] { read_shard_part(file); }).find("the checksum does not match"), std::string::npos);
+    const size_t pixels_at = kHeaderBytes - 8;
+    bytes[pixels_at + 3] = 0x20;  // 2^29 pixels and a few
+    write_bytes(file, bytes);
+    EXPECT_NE(error_of([&] { read_shard_part(file); }).find("truncated part file"), std::string::npos);
+}
+
 // Merging: N parts of state(), written to `dir`, one file per part.
 std::vector<fs::path> write_parts(const fs::path& dir, int n, bool weighted = false) {
     std::vector<fs::path> files;

@@ -123,11 +123,11 @@ ShardPart read_shard_part(const fs::path& file) {
     if (!(part.info.output.gamma > 0.0f && std::isfinite(part.info.output.gamma)))
         corrupt(fmt::format("gamma {}", part.info.output.gamma));
     const RenderIdentity& id = part.identity;
-    const uint64_t expected_pixels = pixel_count(shard_tiles(id.width, id.height, part.info.shard));
-    if (pixels != expected_pixels)
-        corrupt(fmt::format("{} pixels, part {} of {} of a {}x{} film has {}", pixels, index, count, id.width,
-                            id.height, expected_pixels));
+    if (pixels > uint64_t(id.width) * uint64_t(id.height))
+        corrupt(fmt::format("{} pixels in a part of a {}x{} film", pixels, id.width, id.height));
 
+    // The size the header claims and the checksum first, the tiles (a sort of up to 2^22 of them)
+    // only then.
     const size_t header = kMagic.size() + r.position();
     const size_t value_count = size_t(pixels) * values_per_pixel;
     const uint64_t expected = header + value_count * 8 + 8;
@@ -139,6 +139,10 @@ ShardPart read_shard_part(const fs::path& file) {
                                size - expected, index, count, id.width, id.height));
     data = read_bytes(file, size);
     check_checksum(file, data);
+    const uint64_t expected_pixels = pixel_count(shard_tiles(id.width, id.height, part.info.shard));
+    if (pixels != expected_pixels)
+        corrupt(fmt::format("{} pixels, part {} of {} of a {}x{} film has {}", pixels, index, count, id.width,
+                            id.height, expected_pixels));
     Reader body(std::string_view(data).substr(header, value_count * 8));
     part.values.resize(value_count);
     for (size_t i = 0; i < value_count; ++i) {
