@@ -378,7 +378,10 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
         job = {r.ranks, r.bytes_received, r.bytes_sent};
     } else
 #endif
+    {
         result = render(scene, options, std::move(start));
+        stop_signal = cli::stop_signal();  // the signal that stopped it, if one did
+    }
     startup.startup_seconds += result.stats.build_seconds;  // render() builds, then samples
     const std::string stopped = stop_reason(result.end, stop_signal, a);
     const int exit_code = result.end == RenderEnd::kStopped ? 128 + stop_signal : 0;
