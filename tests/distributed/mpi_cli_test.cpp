@@ -151,6 +151,23 @@ TEST(MpiRender, GivesTheBitsOfOneProcessWithAWeightedFilterAndACropWindow) {
     expect_same_images(dir, "three", "one");
 }
 
+TEST(MpiRender, APartRenderedOnRanksMergesWithAPartRenderedAlone) {
+    const fs::path dir = temp_dir("shard");
+    ASSERT_EQ(run_alone(render_args(dir, "whole", "5", 2), dir / "whole.log").exit_code, 0);
+    const Args part = {"render", kCornell, "--resolution", "40x30", "--spp", "5", "--threads", "1"};
+    Args first = part, second = part;
+    first.insert(first.end(), {"--shard", "1/2", "-o", (dir / "part-1.ckpt").string()});
+    second.insert(second.end(), {"--shard", "2/2", "-o", (dir / "part-2.ckpt").string()});
+    const CliRun ranks = run_mpi(3, first, dir / "part-1.log");
+    ASSERT_EQ(ranks.exit_code, 0) << ranks.output;
+    ASSERT_EQ(run_alone(second, dir / "part-2.log").exit_code, 0);
+    const CliRun merged = run_alone({"merge", (dir / "part-1.ckpt").string(), (dir / "part-2.ckpt").string(), "-o",
+                                     (dir / "merged.exr").string(), "-o", (dir / "merged.pfm").string()},
+                                    dir / "merge.log");
+    ASSERT_EQ(merged.exit_code, 0) << merged.output;
+    expect_same_images(dir, "merged", "whole");
+}
+
 TEST(MpiRender, AStopUnderMpiResumesInOneProcessAndTheOtherWayRound) {
     const fs::path dir = temp_dir("resume");
     // Stopped by the time limit on 3 ranks, resumed alone.
