@@ -20,6 +20,7 @@
 #include "candela/core/error.h"
 #include "candela/distributed/mpi_launch.h"
 #include "candela/image/image_io.h"
+#include "candela/image/image_layers.h"
 #include "candela/render/checkpoint.h"
 #include "candela/render/progress.h"
 #include "candela/render/renderer.h"
@@ -27,6 +28,7 @@
 #include "candela/scene/content_hash.h"
 #include "candela/scene/enum_names.h"
 #include "candela/formats/scene_file.h"
+#include "aov_flag.h"
 #include "cli_exit_codes.h"
 #include "render_command.h"
 #include "stop_signals.h"
@@ -139,6 +141,7 @@ void apply_overrides(const RenderArgs& a, Scene& scene) {
         scene.sampler.type = *t;
     }
     apply_sensor_overrides(a, scene.film);
+    if (a.aov) scene.film.aovs = parse_aov_flag(*a.aov);
 }
 
 // Render statistics as JSON, for scripts (bench/run.sh) that should not parse the summary line.
@@ -394,7 +397,7 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
     // early, and at the end of a render asked for checkpoints (so that it can be taken further).
     const bool write_ckpt = !stopped.empty() || a.checkpoint || a.checkpoint_every || a.resume || shard;
     if (write_ckpt) save(result.state);
-    for (const fs::path& out : outputs) write_image(out, result.image, scene.film);
+    for (const fs::path& out : outputs) write_image_with_layers(out, result.image, result.aov_layers, scene.film);
     if (a.stats) write_stats(*a.stats, scene, result.stats, startup, job);
 
     const RenderStats& s = result.stats;
@@ -463,6 +466,9 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
     cmd->add_option("--shard", args.shard,
                     "Render part I of N (I/N, a fixed set of 16-pixel tiles) to a part file -o PART.ckpt; "
                     "candela merge puts the parts together (docs/CLUSTER.md)");
+    cmd->add_option("--aov", args.aov,
+                    "Also write these layers, comma-separated: albedo, normal, depth, position (overrides film.aovs; "
+                    "EXR layers, or files beside other formats)");
 
     return cmd;
 }

@@ -31,6 +31,7 @@ struct RenderArgs {
     std::optional<double> exposure_time;     // seconds
     std::optional<double> white_balance;     // kelvin; 0 = none
     std::optional<std::string> shard;        // "I/N": render part I of N to a part file (-o PART.ckpt)
+    std::optional<std::string> aov;          // AOV layers, comma-separated (aov_flag.h)
 };
 
 // Adds the subcommand and its flags to the program; parsing fills `args`.

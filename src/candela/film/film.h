@@ -7,13 +7,19 @@
 // With a filter whose samples have weights (film/pixel_filter.h: pbrt-v4's tabulated filters) the
 // film also sums each pixel's weights and resolves to sum / weight sum (pbrt-v4's RGBFilm). Films
 // of weight-1 filters keep no weights: their weight sum is the sample count, exactly.
+//
+// With AOV layers (film/aov_layers.h) the film also sums, per pixel, each sample's AOV values
+// (albedo, normal, depth, position) times the same filter weight as its radiance, so the layers
+// resolve exactly like the beauty image. Films without AOVs allocate nothing for them.
 #include <array>
 #include <cstdint>
 #include <vector>
 
+#include "candela/film/aov_layers.h"
 #include "candela/film/film_settings.h"
 #include "candela/image/image.h"
 #include "candela/math/rgb.h"
+#include "candela/math/vec.h"
 
 namespace candela {
 
@@ -35,11 +41,25 @@ inline void add_weighted_to_sum(PixelSum& sum, const Rgb& value, float weight) {
     sum[2] += double(value.b) * w;
 }
 
+// One camera sample's AOV values (render/aov_tracer.h): what the film sums for the AOV layers.
+struct AovSample {
+    Rgb albedo;      // at the first non-specular vertex, times the specular chain's tint
+    Vec3f normal;    // shading normal there, world space, facing the ray; 0 on a miss
+    float depth;     // distance along the camera ray to the first hit; kAovMissDepth on a miss
+    Vec3f position;  // world-space first hit; 0 on a miss
+};
+
+// The depth of a camera sample that hits nothing: a finite "far away" (Blender Cycles' value for
+// its Z pass), which filtering and averaging keep finite, where infinity would make every
+// silhouette pixel infinite and NaN-prone in a compositor.
+inline constexpr float kAovMissDepth = 1e10f;
+
 class Film {
   public:
     Film() = default;  // 0 x 0
-    // `weighted`: the film keeps per-pixel weight sums (all 0 to start).
-    Film(int width, int height, bool weighted = false);
+    // `weighted`: the film keeps per-pixel weight sums (all 0 to start); `aovs`: the AOV layers
+    // whose sums it keeps (all 0 to start).
+    Film(int width, int height, bool weighted = false, AovLayers aovs = {});
     // A film holding these sums (row-major, width * height of them), e.g. read from a checkpoint;
     // `weights` is empty (an unweighted film) or has one weight sum per pixel.
     Film(int width, int height, std::vector<PixelSum> sums, std::vector<double> weights = {});
@@ -59,9 +79,17 @@ class Film {
     // All weight sums, row-major; empty for an unweighted film.
     const std::vector<double>& weights() const { return weights_; }
 
-    // The doubles the film keeps per pixel: the three sums, then the weight sum for a weighted
-    // film. What checkpoints, shard parts and MPI messages carry for each pixel.
-    int values_per_pixel() const { return weighted_ ? 4 : 3; }
+    // The AOV layers the film sums, and pixel (x, y)'s AOV sums: aovs().value_count() doubles,
+    // each layer's at aovs().offset(layer).
+    AovLayers aovs() const { return aovs_; }
+    double* aov_sums(int x, int y) { return aov_sums_.data() + index(x, y) * size_t(aov_values_); }
+    const double* aov_sums(int x, int y) const { return aov_sums_.data() + index(x, y) * size_t(aov_values_); }
+    // Adds one sample's AOV values times `weight` to pixel (x, y)'s AOV sums.
+    void add_aov_sample(int x, int y, const AovSample& sample, float weight);
+
+    // The doubles the film keeps per pixel: the three sums, the weight sum for a weighted film,
+    // then the AOV sums. What checkpoints, shard parts and MPI messages carry for each pixel.
+    int values_per_pixel() const { return (weighted_ ? 4 : 3) + aov_values_; }
     // Copies the values of the pixels in `region` (row-major, values_per_pixel() each) to `out`,
     // which has room for region.width() * region.height() * values_per_pixel() doubles; and back.
     void read_region(const PixelBounds& region, double* out) const;
@@ -70,6 +98,9 @@ class Film {
     // Unweighted: the mean over `samples_per_pixel` samples; weighted: each sum divided by its
     // weight sum (0 where that is 0). As floats.
     Image resolve(uint32_t samples_per_pixel) const;
+    // The summed AOV layers, resolved like resolve(), in AovLayer order, named and with their
+    // channels' names (film/aov_layers.h).
+    std::vector<ImageLayer> resolve_aovs(uint32_t samples_per_pixel) const;
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -80,6 +111,9 @@ class Film {
     std::vector<PixelSum> sums_;
     std::vector<double> weights_;
     bool weighted_ = false;
+    AovLayers aovs_;
+    int aov_values_ = 0;  // aovs_.value_count()
+    std::vector<double> aov_sums_;  // aov_values_ per pixel, row-major; empty without AOVs
 };
 
 }  // namespace candela

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "candela/core/platform.h"
+#include "candela/film/aov_layers.h"
 #include "candela/math/vec.h"
 
 namespace candela {
@@ -79,6 +80,8 @@ struct FilmSettings {
     float iso = 100.0f;
     float exposure_time = 1.0f;  // seconds
     float white_balance = 0.0f;  // 0 or >= kMinWhiteBalanceKelvin
+    // The AOV layers written beside the image (film.aovs, --aov): none by default.
+    AovLayers aovs;
 };
 
 // The sensor's imaging ratio: exposure_time * iso / 100 (pbrt-v4's PixelSensor::Create), exactly 1

@@ -199,12 +199,17 @@ Image read_exr(const fs::path& file) {
     }
 }
 
-void write_exr(const fs::path& file, const Image& image) {
+void write_exr(const fs::path& file, const Image& image) { write_exr(file, image, {}); }
+
+void write_exr(const fs::path& file, const Image& image, const std::vector<ImageLayer>& layers) {
     std::string bytes;
     try {
         Imf::Header header(image.width, image.height);
         header.compression() = Imf::ZIP_COMPRESSION;
         for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+        for (const ImageLayer& layer : layers)
+            for (int c = 0; c < layer.channels; ++c)
+                header.channels().insert(layer.channel_names[size_t(c)], Imf::Channel(Imf::FLOAT));
 
         // Encoded in memory: OutputFile's destructor writes the line offset table and swallows
         // errors there, so writing the file directly could hide a short write.
@@ -212,13 +217,20 @@ void write_exr(const fs::path& file, const Image& image) {
         {
             Imf::OutputFile out(stream, header);
             Imf::FrameBuffer frame;
-            // OpenEXR's Slice takes a mutable pointer but only reads through it when writing.
-            char* base = reinterpret_cast<char*>(const_cast<Rgb*>(image.pixels.data()));
             const size_t x_stride = sizeof(Rgb);
             const size_t y_stride = sizeof(Rgb) * size_t(image.width);
-            frame.insert("R", Imf::Slice(Imf::FLOAT, base + offsetof(Rgb, r), x_stride, y_stride));
-            frame.insert("G", Imf::Slice(Imf::FLOAT, base + offsetof(Rgb, g), x_stride, y_stride));
-            frame.insert("B", Imf::Slice(Imf::FLOAT, base + offsetof(Rgb, b), x_stride, y_stride));
+            // Channel c of an image: r, g or b of each pixel. OpenEXR's Slice takes a mutable
+            // pointer but only reads through it when writing.
+            auto insert = [&](const std::string& name, const Image& from, int c) {
+                char* base = reinterpret_cast<char*>(const_cast<Rgb*>(from.pixels.data()));
+                const size_t offset = c == 0 ? offsetof(Rgb, r) : c == 1 ? offsetof(Rgb, g) : offsetof(Rgb, b);
+                frame.insert(name, Imf::Slice(Imf::FLOAT, base + offset, x_stride, y_stride));
+            };
+            insert("R", image, 0);
+            insert("G", image, 1);
+            insert("B", image, 2);
+            for (const ImageLayer& layer : layers)
+                for (int c = 0; c < layer.channels; ++c) insert(layer.channel_names[size_t(c)], layer.image, c);
             out.setFrameBuffer(frame);
             out.writePixels(image.height);
         }
@@ -227,6 +239,39 @@ void write_exr(const fs::path& file, const Image& image) {
         fail(file, std::string("cannot encode OpenEXR image: ") + e.what());
     }
     write_contents_atomically(file, bytes);
+}
+
+std::vector<std::string> read_exr_channel_names(const fs::path& file) {
+    try {
+        Imf::InputFile in(file.c_str());
+        std::vector<std::string> names;
+        const Imf::ChannelList& channels = in.header().channels();
+        for (auto it = channels.begin(); it != channels.end(); ++it) names.emplace_back(it.name());
+        return names;
+    } catch (const std::exception& e) {
+        fail(file, std::string("cannot read OpenEXR image: ") + e.what());
+    }
+}
+
+Image read_exr_channels(const fs::path& file, const std::vector<std::string>& names) {
+    try {
+        Imf::InputFile in(file.c_str());
+        const Imath::Box2i dw = in.header().dataWindow();
+        Image image(dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1);
+        Imf::FrameBuffer frame;
+        float* first[3] = {&image.pixels.data()->r, &image.pixels.data()->g, &image.pixels.data()->b};
+        for (size_t c = 0; c < names.size() && c < 3; ++c) {
+            if (!in.header().channels().findChannel(names[c])) fail(file, "OpenEXR image has no channel " + names[c]);
+            frame.insert(names[c], Imf::Slice::Make(Imf::FLOAT, first[c], dw, sizeof(Rgb), sizeof(Rgb) * size_t(image.width)));
+        }
+        in.setFrameBuffer(frame);
+        in.readPixels(dw.min.y, dw.max.y);
+        return image;
+    } catch (const SceneError&) {
+        throw;
+    } catch (const std::exception& e) {
+        fail(file, std::string("cannot read OpenEXR image: ") + e.what());
+    }
 }
 
 }  // namespace candela::image_formats

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "candela/film/film_settings.h"
 #include "candela/image/image.h"
@@ -17,6 +18,12 @@ namespace candela::image_formats {
 // written as 32-bit float R, G, B with ZIP compression.
 Image read_exr(const std::filesystem::path& file);
 void write_exr(const std::filesystem::path& file, const Image& image);
+// With AOV layers: each layer's channels beside R, G, B, under the layer's channel names.
+void write_exr(const std::filesystem::path& file, const Image& image, const std::vector<ImageLayer>& layers);
+
+// The channel names of an OpenEXR file, and up to three named channels read into r, g, b.
+std::vector<std::string> read_exr_channel_names(const std::filesystem::path& file);
+Image read_exr_channels(const std::filesystem::path& file, const std::vector<std::string>& names);
 
 // Portable float map (pfm_file.cpp): "PF" (RGB) or "Pf" (grey), rows bottom to top, the sign of
 // the scale giving the byte order; written little-endian with scale -1.

@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "candela/core/error.h"
 #include "candela/render/checkpoint_codec.h"
@@ -19,8 +21,13 @@ namespace {
 namespace fs = std::filesystem;
 using namespace checkpoint_codec;
 
-constexpr size_t kBytesPerPixel = 3 * 8;
-constexpr size_t kWeightedBytesPerPixel = 4 * 8;
+// "albedo, depth", or "none".
+std::string aov_layer_list(uint32_t mask) {
+    std::string names;
+    for (int l = 0; l < kAovLayerCount; ++l)
+        if ((mask >> l) & 1u) names += (names.empty() ? "" : ", ") + std::string(kAovLayerInfo[size_t(l)].name);
+    return names.empty() ? "none" : names;
+}
 
 }  // namespace
 
@@ -34,6 +41,7 @@ RenderIdentity render_identity(const Scene& scene, uint64_t content_hash) {
     const PixelBounds bounds = render_pixel_bounds(scene);
     id.width = bounds.width();
     id.height = bounds.height();
+    id.aov_layers = scene.film.aovs.mask();
     return id;
 }
 
@@ -42,13 +50,25 @@ void write_checkpoint(const fs::path& file, const RenderIdentity& identity, cons
     RenderIdentity id = identity;
     id.width = film.width();
     id.height = film.height();
+    // Films without AOVs keep the formats they had before AOVs existed.
+    const bool describes_values = !film.aovs().empty();
     Writer w;
-    write_common_header(w, film.weighted() ? kWeightedFormatVersion : kFormatVersion, id, state.samples_done,
-                        state.dropped_samples);
+    write_common_header(w,
+                        describes_values ? kFilmValuesFormatVersion
+                        : film.weighted() ? kWeightedFormatVersion
+                                          : kFormatVersion,
+                        id, state.samples_done, state.dropped_samples);
+    if (describes_values) {
+        w.u32((film.weighted() ? kWeightedFlag : 0u) | (film.aovs().mask() << kAovFlagShift));
+        w.u32(0);  // adaptive sampling's min_spp and threshold: none in this build
+        w.u32(0);
+    }
     write_checksummed(file, w, [&](Writer& out, const std::function<void()>& flush) {
-        for (size_t i = 0; i < film.sums().size(); ++i) {
-            for (double v : film.sums()[i]) out.f64(v);
-            if (film.weighted()) out.f64(film.weights()[i]);
+        // Row by row, each pixel's values in Film::read_region's order.
+        std::vector<double> row(size_t(film.width()) * size_t(film.values_per_pixel()));
+        for (int y = 0; y < film.height(); ++y) {
+            film.read_region(PixelBounds{0, y, film.width(), y + 1}, row.data());
+            for (double v : row) out.f64(v);
             flush();
         }
     });
@@ -68,10 +88,26 @@ Checkpoint read_checkpoint(const fs::path& file) {
                                                "resume it with --shard {}/{}, or merge the parts with candela merge",
                                                index, count, index, count));
     }
-    const bool weighted = h.format == kWeightedFormatVersion;
-    const size_t bytes_per_pixel = weighted ? kWeightedBytesPerPixel : kBytesPerPixel;
+    bool weighted = h.format == kWeightedFormatVersion;
+    AovLayers aovs;
+    if (h.format == kFilmValuesFormatVersion) {
+        const uint32_t values = r.u32(), min_spp = r.u32(), threshold = r.u32();
+        const uint32_t aov_mask = values >> kAovFlagShift;
+        if (r.truncated()) fail(file, fmt::format("truncated checkpoint: {} bytes, the header alone is longer", size));
+        if ((values & ~(kWeightedFlag | (((1u << kAovLayerCount) - 1u) << kAovFlagShift))) != 0 || min_spp != 0 ||
+            threshold != 0)
+            fail(file, fmt::format("checkpoint film values {:#x} (adaptive sampling {}, {:#x}): this candela reads only "
+                                   "weight sums and AOV layers",
+                                   values, min_spp, threshold));
+        weighted = (values & kWeightedFlag) != 0;
+        for (int l = 0; l < kAovLayerCount; ++l)
+            if ((aov_mask >> l) & 1u) aovs.add(AovLayer(l));
+    }
+    // Film::values_per_pixel() of the film below, which is allocated only once the size is right.
+    const size_t bytes_per_pixel = size_t((weighted ? 4 : 3) + aovs.value_count()) * 8;
     Checkpoint c;
     c.identity = h.identity;
+    c.identity.aov_layers = aovs.mask();
     const RenderIdentity& id = c.identity;
     const uint32_t width = uint32_t(id.width), height = uint32_t(id.height), samples = h.samples_done;
     const uint64_t dropped = h.dropped_samples;
@@ -88,19 +124,19 @@ Checkpoint read_checkpoint(const fs::path& file) {
     data = read_bytes(file, size);
     check_checksum(file, data);
 
+    Film film(id.width, id.height, weighted, aovs);
     Reader body(std::string_view(data).substr(header, pixels * bytes_per_pixel));
-    std::vector<PixelSum> sums(pixels);
-    std::vector<double> weights(weighted ? pixels : 0);
-    auto finite = [&](double v, size_t i) {
-        if (!std::isfinite(v))
-            fail(file, fmt::format("corrupt checkpoint: pixel ({}, {}) has a non-finite sum", i % width, i / width));
-        return v;
-    };
-    for (size_t i = 0; i < pixels; ++i) {
-        for (double& v : sums[i]) v = finite(body.f64(), i);
-        if (weighted) weights[i] = finite(body.f64(), i);
+    const size_t values = size_t(film.values_per_pixel());
+    std::vector<double> row(size_t(width) * values);
+    for (uint32_t y = 0; y < height; ++y) {
+        for (size_t k = 0; k < row.size(); ++k) {
+            row[k] = body.f64();
+            if (!std::isfinite(row[k]))
+                fail(file, fmt::format("corrupt checkpoint: pixel ({}, {}) has a non-finite sum", k / values, y));
+        }
+        film.write_region(PixelBounds{0, int(y), int(width), int(y) + 1}, row.data());
     }
-    c.state = RenderState{Film(id.width, id.height, std::move(sums), std::move(weights)), samples, dropped};
+    c.state = RenderState{std::move(film), samples, dropped};
     return c;
 }
 
@@ -122,6 +158,9 @@ void check_checkpoint_matches(const fs::path& file, const RenderIdentity& checkp
     if (checkpoint.integrator != render.integrator)
         refuse(fmt::format("the checkpoint used integrator {}, this render {} (give the same --integrator)",
                            checkpoint.integrator, render.integrator));
+    if (checkpoint.aov_layers != render.aov_layers)
+        refuse(fmt::format("the checkpoint has the AOV layers {}, this render {} (give the same --aov)",
+                           aov_layer_list(checkpoint.aov_layers), aov_layer_list(render.aov_layers)));
     if (checkpoint.content_hash != render.content_hash)
         refuse(fmt::format("the checkpoint is of a different scene: its content hash is {:016x}, this scene's {:016x} "
                            "(the scene file or a file it names changed; only the sample count may)",

@@ -2,16 +2,21 @@
 // Checkpoint files: a render's accumulated state, to continue it later (candela render SCENE
 // --resume FILE) with a bit-identical result.
 //
-// Format versions 1 and 2: version 2 is written for films with weight sums (film/film.h: the
+// Format versions 1 to 4: version 2 is written for films with weight sums (film/film.h: the
 // tabulated pixel filters) and differs only in the sums, which then have a fourth value per pixel,
 // its weight sum. Version 3 is a shard's part file (shard_part.h, docs/CLUSTER.md): this header,
 // then the shard, target spp, tile size, values per pixel, film flags and output settings, then
 // only the part's pixels; read_checkpoint refuses it (resume it with --shard, merge it with
-// candela merge), read_shard_part reads it. Integers are unsigned little-endian; a string is a
-// u32 byte count (at most 64) and its bytes; sums are IEEE 754 binary64, little-endian.
+// candela merge), read_shard_part reads it. Version 4 is written for films with AOV layers
+// (film/aov_layers.h): its header describes the film's values, and each pixel has the film's
+// values_per_pixel() values in Film::read_region's order (r g b, the weight sum if weighted, then
+// the AOV sums). Its header has the layout the adaptive sampler's films use (its statistics bit
+// and settings are 0 here). Films without AOVs are written as versions 1 and 2, as before AOVs.
+// Integers are unsigned little-endian; a string is a u32 byte count (at most 64) and its bytes;
+// sums are IEEE 754 binary64, little-endian.
 //
 //   magic            8 bytes  "CNDLCKPT"
-//   format version   u32      1, or 2 for a film with weight sums (3: a part file)
+//   format version   u32      1, or 2 for a film with weight sums (3: a part file), 4 (below)
 //   candela version  string   CANDELA_VERSION of the program that wrote it
 //   integrator       string   its name (path, bsdf, ...)
 //   sampler          string   its name (independent, sobol)
@@ -20,9 +25,14 @@
 //   width, height    u32, u32 1..32768 each
 //   samples done     u32      per pixel
 //   dropped samples  u64      NaN/Inf samples among them, counted as zero
+//   version 4 only:
+//     film values    u32      bit 0: weight sums; bit 1: adaptive sampling's statistics (not
+//                             written by this build); bits 8..13: the AOV layers, bit 8 + i for
+//                             AovLayer(i) (albedo, normal, depth, position, variance, spp)
+//     adaptive       u32, u32 adaptive sampling's min_spp and threshold bits: 0, 0 here
 //   sums             f64 x 3 x width x height: per pixel, row-major from the top left, r g b,
 //                             exactly the Film's sums; version 2: f64 x 4, r g b and the
-//                             pixel's weight sum
+//                             pixel's weight sum; version 4: f64 x values_per_pixel()
 //   checksum         u64      Hash64 (core/hash64.h) of every byte before it
 //
 // Files are written atomically (a temporary file, then a rename), so a crash or a second
@@ -46,6 +56,7 @@ struct RenderIdentity {
     uint64_t seed = 0;
     int width = 0;
     int height = 0;
+    uint32_t aov_layers = 0;  // AovLayers::mask() of the film's AOV layers (0: none)
 };
 
 struct Checkpoint {
@@ -67,8 +78,8 @@ void write_checkpoint(const std::filesystem::path& file, const RenderIdentity& i
 Checkpoint read_checkpoint(const std::filesystem::path& file);
 
 // Throws SceneError naming `file` and the first thing in which the checkpoint's identity differs
-// from the render's: candela version, resolution, seed, sampler, integrator, then the scene
-// content (the scene file or a file it names).
+// from the render's: candela version, resolution, seed, sampler, integrator, AOV layers, then the
+// scene content (the scene file or a file it names).
 void check_checkpoint_matches(const std::filesystem::path& file, const RenderIdentity& checkpoint,
                               const RenderIdentity& render);
 

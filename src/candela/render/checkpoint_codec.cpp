@@ -74,9 +74,9 @@ void write_common_header(Writer& w, uint32_t format, const RenderIdentity& ident
 CommonHeader read_common_header(const fs::path& file, Reader& r, uint64_t size) {
     CommonHeader h;
     h.format = r.u32();
-    if (!r.truncated() && (h.format < kFormatVersion || h.format > kPartFormatVersion))
+    if (!r.truncated() && (h.format < kFormatVersion || h.format > kFilmValuesFormatVersion))
         fail(file, fmt::format("checkpoint format version {}; this candela reads versions {} to {}", h.format,
-                               kFormatVersion, kPartFormatVersion));
+                               kFormatVersion, kFilmValuesFormatVersion));
     RenderIdentity& id = h.identity;
     id.candela_version = r.string();
     id.integrator = r.string();

@@ -17,6 +17,11 @@ inline constexpr std::string_view kMagic = "CNDLCKPT";
 inline constexpr uint32_t kFormatVersion = 1;
 inline constexpr uint32_t kWeightedFormatVersion = 2;  // with weight sums
 inline constexpr uint32_t kPartFormatVersion = 3;      // a shard's part
+inline constexpr uint32_t kFilmValuesFormatVersion = 4;  // a film that describes its values (AOV layers)
+// Version 4's film-values word (and a part file's film flags): bit 0 weight sums, bit 1 reserved
+// for adaptive sampling's statistics, bits kAovFlagShift.. the AovLayers mask.
+inline constexpr uint32_t kWeightedFlag = 1u;
+inline constexpr uint32_t kAovFlagShift = 8;
 inline constexpr uint32_t kMaxString = 64;
 inline constexpr int kMaxSide = 32768;  // the scene loader's limit
 // The longest common header: magic, format version, three names of kMaxString bytes, hash, seed,
@@ -76,14 +81,14 @@ void write_common_header(Writer& w, uint32_t format, const RenderIdentity& ident
 
 // What the common header says.
 struct CommonHeader {
-    uint32_t format = 0;  // 1, 2 or 3
+    uint32_t format = 0;  // 1 to 4
     RenderIdentity identity;
     uint32_t samples_done = 0;
     uint64_t dropped_samples = 0;
 };
 
 // Reads the common header from `r`, over the start of a file of `size` bytes that begins with
-// the magic (checked by read_file_start). A format other than 1..3, a truncated or overlong
+// the magic (checked by read_file_start). A format other than 1..4, a truncated or overlong
 // header, or an impossible resolution throws SceneError naming `file`.
 CommonHeader read_common_header(const std::filesystem::path& file, Reader& r, uint64_t size);
 

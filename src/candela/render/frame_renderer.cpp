@@ -1,6 +1,9 @@
 #include "candela/render/frame_renderer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
+#include <type_traits>
 #include <string>
 
 #include "candela/camera/camera.h"
@@ -9,6 +12,7 @@
 #include "candela/film/pixel_filter.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/lights/light_set.h"
+#include "candela/render/aov_tracer.h"
 #include "candela/render/integrator.h"
 #include "candela/render/renderer.h"
 #include "candela/sampling/sampler.h"
@@ -27,6 +31,7 @@ struct SampleContext {
     SamplerType sampler_type;
     const PixelFilter& filter;
     PixelBounds bounds;  // the film's pixels within the full image (the crop window)
+    const AovTracer* aov_tracer;  // null when the film has no AOV layers
 };
 
 // Camera sample `s` of pixel (x, y) of the full image, added to the pixel's running sum (and its
@@ -34,14 +39,22 @@ struct SampleContext {
 // dropped sample's weight still counts, so it counts as zero as without weights. Its random
 // numbers are a pure function of (pixel, s, seed), so the sum is the same whichever thread
 // computes it and however the samples are split into passes. The filter's request comes first,
-// then the camera's lens point if it has a lens (camera_model.h).
-template <bool Weighted, CameraModel CameraT>
+// then the camera's lens point if it has a lens (camera_model.h). WithAovs: the sample's AOV
+// values (render/aov_tracer.h) are added, with the same filter weight, to pixel `film_pixel` of
+// `to`, after the radiance has taken its random numbers; a sample whose radiance is dropped keeps
+// its AOV values, which are always finite.
+template <bool Weighted, bool WithAovs, CameraModel CameraT>
 void take_sample(const SampleContext& c, const CameraT& camera, int x, int y, uint32_t s,
-                 const PixelSampler& pixel_sampler, PixelSum& sum, double& weight_sum, TileTally& tally) {
+                 const PixelSampler& pixel_sampler, PixelSum& sum, double& weight_sum, TileTally& tally, Film& to,
+                 Vec2i film_pixel) {
     Sampler sampler = pixel_sampler.sample(s);
     const FilterSample f = c.filter.sample(s, sampler.next_vec2f());
     Vec2f film_pos = Vec2f(float(x), float(y)) + f.position;
-    Rgb L = c.integrator.radiance(camera.generate_ray(film_pos, sampler), sampler, tally.rays);
+    const Ray camera_ray = camera.generate_ray(film_pos, sampler);
+    Rgb L = c.integrator.radiance(camera_ray, sampler, tally.rays);
+    if constexpr (WithAovs)
+        to.add_aov_sample(film_pixel.x, film_pixel.y, c.aov_tracer->trace(camera_ray, sampler, tally.rays),
+                          Weighted ? f.weight : 1.0f);
     if constexpr (Weighted) weight_sum += double(f.weight);
     if (!L.is_finite()) {
         ++tally.dropped;
@@ -53,11 +66,12 @@ void take_sample(const SampleContext& c, const CameraT& camera, int x, int y, ui
         add_to_sum(sum, L);
 }
 
-// The samples [begin, end) of one tile's pixels, for one kind of camera and filter: the caller
-// dispatches on both once per tile, so the sample loop has no camera or weight branch. Tiles are in
+// The samples [begin, end) of one tile's pixels, for one kind of camera and filter, with or without
+// AOVs: the caller dispatches on all three once per tile, so the sample loop has no camera, weight
+// or AOV branch (a render without AOVs runs the code it ran before they existed). Tiles are in
 // film pixels; the camera and the sampler see full-image pixels, so a cropped film's pixels get
 // the rays and random numbers they have in the full image.
-template <bool Weighted, CameraModel CameraT>
+template <bool Weighted, bool WithAovs, CameraModel CameraT>
 void render_pixels(const SampleContext& c, const CameraT& camera, const Tile& tile, uint32_t begin, uint32_t end,
                    const Film& from, Film& to, TileTally& tally) {
     for (int y = tile.y0; y < tile.y1; ++y) {
@@ -66,10 +80,14 @@ void render_pixels(const SampleContext& c, const CameraT& camera, const Tile& ti
             PixelSum sum = from.sum(x, y);
             double weight_sum = 0.0;
             if constexpr (Weighted) weight_sum = from.weight(x, y);
+            if constexpr (WithAovs)
+                if (&from != &to)
+                    std::copy_n(from.aov_sums(x, y), from.aovs().value_count(), to.aov_sums(x, y));
             const PixelSampler pixel_sampler(c.sampler_type,
                                              uint64_t(full_y) * uint64_t(c.width) + uint64_t(full_x), c.seed);
             for (uint32_t s = begin; s < end; ++s)
-                take_sample<Weighted>(c, camera, full_x, full_y, s, pixel_sampler, sum, weight_sum, tally);
+                take_sample<Weighted, WithAovs>(c, camera, full_x, full_y, s, pixel_sampler, sum, weight_sum, tally, to,
+                                                Vec2i(x, y));
             to.sum(x, y) = sum;
             if constexpr (Weighted) to.weight(x, y) = weight_sum;
         }
@@ -85,6 +103,7 @@ struct FrameRenderer::Parts {
     Camera camera;
     std::unique_ptr<Integrator> integrator;
     PixelFilter filter;
+    std::optional<AovTracer> aov_tracer;  // engaged when the film has AOV layers
     SampleContext context;
 
     Parts(const Scene& scene, PixelBounds bounds)
@@ -94,7 +113,11 @@ struct FrameRenderer::Parts {
           camera(make_camera(scene.camera)),
           integrator(make_integrator(scene, accel, lights)),
           filter(scene.film.filter),
-          context{*integrator, scene.camera.width, scene.sampler.seed, scene.sampler.type, filter, bounds} {}
+          aov_tracer(scene.film.aovs.empty() ? std::nullopt : std::make_optional<AovTracer>(scene, accel)),
+          context{*integrator, scene.camera.width, scene.sampler.seed, scene.sampler.type, filter, bounds,
+                  aov_tracer ? &*aov_tracer : nullptr},
+          aovs(scene.film.aovs) {}
+    AovLayers aovs;
 };
 
 FrameRenderer::FrameRenderer(const Scene& scene) : bounds_(render_pixel_bounds(scene)) {
@@ -110,14 +133,21 @@ FrameRenderer::~FrameRenderer() = default;
 
 bool FrameRenderer::weighted() const { return parts_->filter.weighted(); }
 
+AovLayers FrameRenderer::aovs() const { return parts_->aovs; }
+
 void FrameRenderer::render_tile(const Tile& tile, uint32_t begin, uint32_t end, const Film& from, Film& to,
                                 TileTally& tally) const {
     const Parts& p = *parts_;
+    const bool aovs = p.aov_tracer.has_value();
+    auto run = [&](auto weighted, auto with_aovs) {
+        visit([&](const auto& cam) {
+            render_pixels<weighted(), with_aovs()>(p.context, cam, tile, begin, end, from, to, tally);
+        }, p.camera);
+    };
     if (p.filter.weighted())
-        visit([&](const auto& cam) { render_pixels<true>(p.context, cam, tile, begin, end, from, to, tally); }, p.camera);
+        aovs ? run(std::true_type{}, std::true_type{}) : run(std::true_type{}, std::false_type{});
     else
-        visit([&](const auto& cam) { render_pixels<false>(p.context, cam, tile, begin, end, from, to, tally); },
-              p.camera);
+        aovs ? run(std::false_type{}, std::true_type{}) : run(std::false_type{}, std::false_type{});
 }
 
 }  // namespace candela

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "candela/film/aov_layers.h"
 #include "candela/film/film_settings.h"
 #include "candela/render/ray_counters.h"
 #include "candela/render/tile.h"
@@ -37,6 +38,8 @@ class FrameRenderer {
     int width() const { return bounds_.width(); }
     int height() const { return bounds_.height(); }
     bool weighted() const;
+    // The AOV layers the scene asks for (FilmSettings::aovs): films rendered into must keep them.
+    AovLayers aovs() const;
     double build_seconds() const { return build_seconds_; }
 
     // Samples [begin, end) of the tile's pixels: each pixel's sum (and weight sum) is read from

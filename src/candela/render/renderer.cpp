@@ -53,6 +53,8 @@ void check_start_state(const FrameRenderer& frame, const RenderState& start) {
     if (start.film.weighted() != frame.weighted())
         throw RenderError(std::string("render: the start state ") + (start.film.weighted() ? "has" : "lacks") +
                           " the weight sums that the pixel filter " + (frame.weighted() ? "needs" : "does not use"));
+    if (!(start.film.aovs() == frame.aovs()))
+        throw RenderError("render: the start state's AOV layers are not the ones the scene asks for");
 }
 
 }  // namespace
@@ -116,7 +118,7 @@ PixelBounds render_pixel_bounds(const Scene& scene) {
 
 Film make_film(const Scene& scene) {
     const PixelBounds bounds = render_pixel_bounds(scene);
-    return Film(bounds.width(), bounds.height(), is_tabulated(scene.film.filter.type));
+    return Film(bounds.width(), bounds.height(), is_tabulated(scene.film.filter.type), scene.film.aovs);
 }
 
 std::vector<Tile> render_tiles(int width, int height, const RenderOptions& options) {
@@ -197,7 +199,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
                 abandon = RenderEnd::kDeadline;
                 break;
             }
-            if (next.width() != width || next.height() != height) next = Film(width, height, frame.weighted());
+            if (next.width() != width || next.height() != height) next = Film(width, height, frame.weighted(), frame.aovs());
             const Pass pass{state.samples_done, state.samples_done + n, &state.film, &next};
             const Clock::time_point pass_start = Clock::now();
             run_pass(arena, pass, progress);
@@ -219,6 +221,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
     for (const TileTally& t : tallies) result.stats.rays += t.rays;
     result.stats.samples = pixels * (state.samples_done - start_samples);
     result.image = state.film.resolve(state.samples_done);
+    result.aov_layers = state.film.resolve_aovs(state.samples_done);
     return result;
 }
 

@@ -65,6 +65,7 @@ struct RenderStats {
 
 struct RenderResult {
     Image image;        // the mean of state's samples (black when it has none)
+    std::vector<ImageLayer> aov_layers;  // the film's AOV layers, resolved like `image`
     RenderStats stats;
     RenderState state;  // the sums after the last complete pass: what a checkpoint saves
     RenderEnd end = RenderEnd::kComplete;
@@ -85,7 +86,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options);
 // the film's crop window.
 PixelBounds render_pixel_bounds(const Scene& scene);
 // The empty film a render of `scene` starts from: the crop window's size, with weight sums when
-// the pixel filter's samples have weights.
+// the pixel filter's samples have weights, and AOV sums for the scene's AOV layers.
 Film make_film(const Scene& scene);
 
 // The tiles a render of a width x height film with `options` renders: all of them, or those of

@@ -101,6 +101,12 @@ uint64_t scene_content_hash(std::string_view json_text, const Scene& scene) {
         for (float v : {scene.film.iso, scene.film.exposure_time, scene.film.white_balance})
             hash.add_u64(std::bit_cast<uint32_t>(v));
     }
+    // The AOV layers (film.aovs or --aov) change what the film sums per pixel: only when some are
+    // asked for, so that renders without AOVs keep their hashes.
+    if (!scene.film.aovs.empty()) {
+        hash.add_field("aovs");
+        hash.add_u64(scene.film.aovs.mask());
+    }
     return hash.value();
 }
 

@@ -120,5 +120,35 @@ TEST(SceneLoaderFilm, FilenameIsTheDefaultOutput) {
     EXPECT_EQ(load_error(R"({"film": {"filename": 3}})").where().json_pointer, "/film/filename");
 }
 
+TEST(SceneLoaderFilm, AovsAreRead) {
+    EXPECT_TRUE(load_json("{}").film.aovs.empty());
+    EXPECT_TRUE(load_json(R"({"film": {"aovs": []}})").film.aovs.empty());
+    const AovLayers aovs = load_json(R"({"film": {"aovs": ["position", "albedo", "depth"]}})").film.aovs;
+    EXPECT_TRUE(aovs.has(AovLayer::kAlbedo));
+    EXPECT_TRUE(aovs.has(AovLayer::kDepth));
+    EXPECT_TRUE(aovs.has(AovLayer::kPosition));
+    EXPECT_FALSE(aovs.has(AovLayer::kNormal));
+    EXPECT_EQ(aovs.value_count(), 3 + 1 + 3);
+    EXPECT_EQ(aovs.offset(AovLayer::kPosition), 4);  // after albedo and depth, whatever the listed order
+}
+
+TEST(SceneLoaderFilm, BadAovsAreLocatedErrors) {
+    SceneError unknown = load_error(R"({"film": {"aovs": ["albedo", "normals"]}})");
+    EXPECT_EQ(unknown.where().json_pointer, "/film/aovs/1");
+    EXPECT_EQ(unknown.message(),
+              "unknown AOV layer \"normals\"; expected one of: albedo, normal, depth, position, variance, spp");
+    SceneError twice = load_error(R"({"film": {"aovs": ["depth", "albedo", "depth"]}})");
+    EXPECT_EQ(twice.where().json_pointer, "/film/aovs/2");
+    EXPECT_EQ(twice.message(), "AOV layer \"depth\" is listed twice");
+    SceneError not_array = load_error(R"({"film": {"aovs": "albedo"}})");
+    EXPECT_EQ(not_array.where().json_pointer, "/film/aovs");
+    EXPECT_NE(not_array.message().find("an array of AOV layer names"), std::string::npos) << not_array.message();
+    // The adaptive sampler's layers are not there yet: refused by name, not ignored.
+    SceneError variance = load_error(R"({"film": {"aovs": ["variance"]}})");
+    EXPECT_EQ(variance.where().json_pointer, "/film/aovs/0");
+    EXPECT_NE(variance.message().find("not available yet"), std::string::npos) << variance.message();
+    EXPECT_NE(load_error(R"({"film": {"aovs": ["spp"]}})").message().find("not available yet"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace candela

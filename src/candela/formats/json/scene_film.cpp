@@ -1,4 +1,4 @@
-// The film's pixel filter and crop window (docs/SCENE_FORMAT.md, "film").
+// The film's pixel filter, crop window and AOV layers (docs/SCENE_FORMAT.md, "film").
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -76,6 +76,26 @@ std::array<float, 4> read_crop_window(const JsonCursor& crop, const CameraSettin
         crop.fail(fmt::format("the crop window covers no pixel of the {}x{} image (pixels [{}, {}) x [{}, {}))",
                               camera.width, camera.height, b.x0, b.x1, b.y0, b.y1));
     return w;
+}
+
+AovLayers read_aov_layers(const JsonCursor& aovs) {
+    static const std::array<std::string_view, kAovLayerCount> names = [] {
+        std::array<std::string_view, kAovLayerCount> n;
+        for (int i = 0; i < kAovLayerCount; ++i) n[size_t(i)] = kAovLayerInfo[size_t(i)].name;
+        return n;
+    }();
+    if (!aovs.is_array()) aovs.fail_expected(fmt::format("an array of AOV layer names ({})", kAovLayerNames));
+    AovLayers layers;
+    for (const JsonCursor& e : aovs.elements()) {
+        const AovLayer layer = *parse_aov_layer(e.choice("AOV layer", names));
+        const std::string_view name = aov_layer_info(layer).name;
+        if (layers.has(layer)) e.fail(fmt::format("AOV layer \"{}\" is listed twice", name));
+        if (!aov_layer_available(layer))
+            e.fail(fmt::format("AOV layer \"{}\" is not available yet: it needs adaptive sampling's per-pixel "
+                               "statistics (issue 17)", name));
+        layers.add(layer);
+    }
+    return layers;
 }
 
 }  // namespace candela

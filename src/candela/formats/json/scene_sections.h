@@ -32,6 +32,9 @@ FilterSettings read_filter(JsonCursor filter);
 // one pixel of it.
 std::array<float, 4> read_crop_window(const JsonCursor& crop, const CameraSettings& camera);
 
+// `film.aovs`: an array of distinct AOV layer names (film/aov_layers.h).
+AovLayers read_aov_layers(const JsonCursor& aovs);
+
 // `textures`: name -> texture, read before the materials that name them. A texture may name
 // textures defined after it (but not itself, through any chain). The image files are read later,
 // by load_texture_images.
