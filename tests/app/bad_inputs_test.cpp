@@ -136,7 +136,9 @@ const BadInput kBadInputs[] = {
      "the shapes of object \"lamp\" cannot emit: instances are not lights"},
     {"object_nested_instance.json", kStructure, kError, "", 5, 35, "/objects/grove/shapes/0/type",
      "object \"grove\" cannot hold an instance: objects do not nest"},
-    // --- unknown keys, types and names (23)
+    // --- unknown keys, types and names (24)
+    {"aov_unknown.json", kUnknownName, kError, "", 3, 31, "/film/aovs/1",
+     "unknown AOV layer \"normals\"; expected one of: albedo, normal, depth, position, variance, spp"},
     {"environment_unknown_mapping.json", kUnknownName, kError, "", 3, 52, "/lights/0/mapping",
      "unknown environment mapping \"octahedral\"; expected one of: equal_area, equirectangular"},
     {"missing_key_near_miss.json", kUnknownName, kError, "", 4, 45, "/shapes/0",

@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
+
+#include "candela/image/image_layers.h"
 
 namespace {
 
@@ -116,6 +119,43 @@ TEST(Cli, RendersWithOverridesToEveryFormat) {
     for (const char* ext : {".png", ".exr", ".pfm", ".hdr", ".ppm"})
         EXPECT_GT(fs::file_size(dir / (std::string("img") + ext)), 0u) << ext;
     EXPECT_NE(r.output.find("24x16, 1 spp, normals"), std::string::npos) << r.output;
+}
+
+// --aov: layers inside an .exr under their conventional channel names, and files beside a .png.
+TEST(Cli, AovFlagWritesLayersIntoExrAndBesideOtherFormats) {
+    fs::path dir = temp_dir("aov");
+    CliResult r = run_candela("render " + kScene + " --spp 2 --resolution 24x16 --threads 2 --aov albedo,normal,depth,position" +
+                              " -o " + (dir / "img.exr").string() + " -o " + (dir / "img.png").string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    std::vector<std::string> names = candela::read_exr_channel_names(dir / "img.exr");
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"B", "G", "N.X", "N.Y", "N.Z", "P.X", "P.Y", "P.Z", "R", "Z", "albedo.B",
+                                               "albedo.G", "albedo.R"}));
+    for (const char* side : {"img.albedo.png", "img.normal.png", "img.depth.pfm", "img.position.pfm"})
+        EXPECT_TRUE(fs::is_regular_file(dir / side)) << side;
+    EXPECT_FALSE(fs::exists(dir / "img.albedo.exr"));  // inside the .exr, not beside it
+}
+
+TEST(Cli, BadAovValuesAreRefused) {
+    fs::path dir = temp_dir("aov_bad");
+    const std::string out = " -o " + (dir / "x.exr").string();
+    CliResult unknown = run_candela("render " + kScene + " --aov albedo,normals" + out);
+    EXPECT_EQ(unknown.exit_code, 2);
+    EXPECT_NE(unknown.output.find("--aov: unknown AOV layer \"normals\"; expected one of: albedo, normal, depth, "
+                                  "position, variance, spp"),
+              std::string::npos)
+        << unknown.output;
+    CliResult twice = run_candela("render " + kScene + " --aov depth,depth" + out);
+    EXPECT_EQ(twice.exit_code, 2);
+    EXPECT_NE(twice.output.find("AOV layer \"depth\" is listed twice"), std::string::npos) << twice.output;
+    CliResult empty = run_candela("render " + kScene + " --aov albedo,,depth" + out);
+    EXPECT_EQ(empty.exit_code, 2) << empty.output;
+    for (const char* later : {"variance", "spp"}) {
+        CliResult r = run_candela("render " + kScene + " --aov " + later + out);
+        EXPECT_EQ(r.exit_code, 2);
+        EXPECT_NE(r.output.find("not available yet"), std::string::npos) << r.output;
+    }
+    EXPECT_FALSE(fs::exists(dir / "x.exr"));
 }
 
 }  // namespace

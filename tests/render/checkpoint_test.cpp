@@ -114,6 +114,61 @@ TEST(Checkpoint, LargeFilmRoundTripIsExact) {
     EXPECT_EQ(std::memcmp(c.state.film.sums().data(), sums.data(), sums.size() * sizeof(PixelSum)), 0);
 }
 
+// A film with AOV sums (format version 3), weighted or not: every value comes back, through
+// Film::read_region's order, and the header's layers say which sums there are.
+TEST(Checkpoint, AovFilmRoundTripIsExact) {
+    for (bool weighted : {false, true}) {
+        AovLayers aovs;
+        aovs.add(AovLayer::kNormal);
+        aovs.add(AovLayer::kDepth);
+        Film film(5, 3, weighted, aovs);
+        const PixelBounds all{0, 0, 5, 3};
+        std::vector<double> values(size_t(15 * film.values_per_pixel()));
+        ASSERT_EQ(film.values_per_pixel(), (weighted ? 4 : 3) + 4);
+        for (size_t i = 0; i < values.size(); ++i) values[i] = double(i) / 3.0 - 7.0;
+        film.write_region(all, values.data());
+        const fs::path file = temp_file("aovs.ckpt");
+        write_checkpoint(file, identity(), RenderState{film, 17, 4});
+        const Checkpoint c = read_checkpoint(file);
+        EXPECT_EQ(c.identity.aov_layers, aovs.mask());
+        EXPECT_EQ(c.state.film.weighted(), weighted);
+        EXPECT_TRUE(c.state.film.aovs() == aovs);
+        std::vector<double> back(values.size());
+        c.state.film.read_region(all, back.data());
+        EXPECT_EQ(std::memcmp(back.data(), values.data(), values.size() * sizeof(double)), 0);
+        // The header with the weighted flag and the layers, the values, the checksum.
+        EXPECT_EQ(fs::file_size(file), kHeaderBytes + 8 + values.size() * 8 + 8);
+
+        // The layers are part of what must match to resume, with their names in the message.
+        RenderIdentity none = identity();
+        const std::string message = error_of([&] { check_checkpoint_matches(file, c.identity, none); });
+        EXPECT_NE(message.find("cannot resume: the checkpoint has the AOV layers normal, depth, this render none "
+                               "(give the same --aov)"),
+                  std::string::npos)
+            << message;
+    }
+}
+
+TEST(Checkpoint, FilmsWithoutAovsKeepTheirFormats) {
+    const fs::path file = temp_file("plain.ckpt");
+    write_checkpoint(file, identity(), state());
+    const std::string bytes = read_bytes(file);
+    EXPECT_EQ(bytes[8], 1);  // format version 1, as before AOVs
+    write_checkpoint(file, identity(), RenderState{Film(5, 3, true), 1, 0});
+    EXPECT_EQ(read_bytes(file)[8], 2);
+}
+
+TEST(Checkpoint, CorruptAovHeaderIsRefused) {
+    AovLayers aovs;
+    aovs.add(AovLayer::kAlbedo);
+    const fs::path file = temp_file("aov_header.ckpt");
+    write_checkpoint(file, identity(), RenderState{Film(5, 3, false, aovs), 1, 0});
+    std::string bytes = read_bytes(file);
+    bytes[kHeaderBytes + 4] = char(0x40);  // a layer bit past the last layer
+    write_bytes(file, bytes);
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("corrupt checkpoint header"), std::string::npos);
+}
+
 // The checksum's hash (core/hash64.h): the same value however the bytes arrive.
 TEST(Hash64, SameValueHoweverTheBytesAreSplit) {
     std::string bytes(61, '\0');
