@@ -138,7 +138,7 @@ const BadInput kBadInputs[] = {
      "object \"grove\" cannot hold an instance: objects do not nest"},
     // --- unknown keys, types and names (24)
     {"aov_unknown.json", kUnknownName, kError, "", 3, 31, "/film/aovs/1",
-     "unknown AOV layer \"normals\"; expected one of: albedo, normal, depth, position, variance, spp"},
+     "unknown AOV layer \"normals\"; expected one of: albedo, depth, normal, position, spp, variance"},
     {"environment_unknown_mapping.json", kUnknownName, kError, "", 3, 52, "/lights/0/mapping",
      "unknown environment mapping \"octahedral\"; expected one of: equal_area, equirectangular"},
     {"missing_key_near_miss.json", kUnknownName, kError, "", 4, 45, "/shapes/0",

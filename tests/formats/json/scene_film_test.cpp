@@ -136,7 +136,7 @@ TEST(SceneLoaderFilm, BadAovsAreLocatedErrors) {
     SceneError unknown = load_error(R"({"film": {"aovs": ["albedo", "normals"]}})");
     EXPECT_EQ(unknown.where().json_pointer, "/film/aovs/1");
     EXPECT_EQ(unknown.message(),
-              "unknown AOV layer \"normals\"; expected one of: albedo, normal, depth, position, variance, spp");
+              "unknown AOV layer \"normals\"; expected one of: albedo, depth, normal, position, spp, variance");
     SceneError twice = load_error(R"({"film": {"aovs": ["depth", "albedo", "depth"]}})");
     EXPECT_EQ(twice.where().json_pointer, "/film/aovs/2");
     EXPECT_EQ(twice.message(), "AOV layer \"depth\" is listed twice");

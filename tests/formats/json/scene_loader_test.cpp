@@ -248,8 +248,8 @@ TEST(SceneLoader, UnknownKeysInEverySectionAreErrors) {
     EXPECT_EQ(load_error(R"({"film": {"tone_map": "aces"}})").message(),
               "unknown key \"tone_map\" (did you mean \"tonemap\"?)");
     EXPECT_EQ(load_error(R"({"film": {"sensor": "cie1931"}})").message(),
-              "unknown key \"sensor\"; expected one of: crop_window, exposure, exposure_time, filename, filter, gamma, iso, "
-              "tonemap, transfer, white_balance");
+              "unknown key \"sensor\"; expected one of: aovs, crop_window, exposure, exposure_time, filename, filter, gamma, "
+              "iso, tonemap, transfer, white_balance");
     // A misspelt section is reported before anything that depends on it.
     SceneError e = load_error(R"({"shapes": [{"type": "sphere", "center": [0, 0, 0],
                                               "radius": 1, "material": "m"}],
