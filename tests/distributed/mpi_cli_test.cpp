@@ -168,6 +168,22 @@ TEST(MpiRender, APartRenderedOnRanksMergesWithAPartRenderedAlone) {
     expect_same_images(dir, "merged", "whole");
 }
 
+// AOV layers travel with the film's values (Film::values_per_pixel): the EXR's layers and the
+// files beside the .pfm are the bits of one process.
+TEST(MpiRender, GivesTheAovLayersOfOneProcess) {
+    const fs::path dir = temp_dir("aovs");
+    const Args aovs = {"--aov", "albedo,normal,depth,position"};
+    ASSERT_EQ(run_alone(render_args(dir, "one", "3", 2, aovs), dir / "one.log").exit_code, 0);
+    const CliRun r = run_mpi(3, render_args(dir, "three", "3", 1, aovs), dir / "three.log");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    expect_same_images(dir, "three", "one");
+    for (const char* layer : {".albedo.pfm", ".normal.pfm", ".depth.pfm", ".position.pfm"}) {
+        const std::string a = read_bytes(dir / (std::string("three") + layer));
+        EXPECT_FALSE(a.empty()) << layer;
+        EXPECT_TRUE(a == read_bytes(dir / (std::string("one") + layer))) << layer;
+    }
+}
+
 TEST(MpiRender, AStopUnderMpiResumesInOneProcessAndTheOtherWayRound) {
     const fs::path dir = temp_dir("resume");
     // Stopped by the time limit on 3 ranks, resumed alone.

@@ -92,6 +92,7 @@ class RootRender {
         r.stats.samples = pixels_ * (state_.samples_done - start_samples_);
         r.stats.dropped_samples = state_.dropped_samples - start_dropped_;
         r.image = state_.film.resolve(state_.samples_done);
+        r.aov_layers = state_.film.resolve_aovs(state_.samples_done);
         r.state = std::move(state_);
         out.stop_signal = stop_signal_;
         out.exit_code = exit_code();
@@ -168,7 +169,7 @@ class RootRender {
             return false;
         }
         if (next_.width() != frame_.width() || next_.height() != frame_.height())
-            next_ = Film(frame_.width(), frame_.height(), frame_.weighted());
+            next_ = Film(frame_.width(), frame_.height(), frame_.weighted(), frame_.aovs());
         pass_begin_ = state_.samples_done;
         pass_end_ = state_.samples_done + n;
         ++pass_id_;
@@ -327,7 +328,7 @@ class WorkerRender {
     WorkerRender(const MpiSession& session, const FrameRenderer& frame, const MpiRenderOptions& options)
         : session_(session), frame_(frame), options_(options),
           tiles_(render_tiles(frame.width(), frame.height(), options.render)),
-          film_(frame.width(), frame.height(), frame.weighted()) {}
+          film_(frame.width(), frame.height(), frame.weighted(), frame.aovs()) {}
 
     MpiRenderResult run() {
         const int threads = threads_for(session_, options_.render);
@@ -509,7 +510,7 @@ MpiRenderResult render_mpi(const MpiSession& session, const Scene& scene, const 
     const FrameRenderer frame(scene);
     if (session.rank() != 0) return WorkerRender(session, frame, options).run();
     if (start.film.width() != frame.width() || start.film.height() != frame.height() ||
-        start.film.weighted() != frame.weighted())
+        start.film.weighted() != frame.weighted() || !(start.film.aovs() == frame.aovs()))
         throw RenderError("render: the start state does not fit the scene's film");
     return RootRender(session, frame, scene, options, std::move(start)).run();
 }
