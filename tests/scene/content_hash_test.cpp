@@ -118,6 +118,16 @@ TEST_F(ContentHash, ChangesWithEachCommandLineOverride) {
     s = loaded;
     s.film.white_balance = 5000;  // --white-balance
     EXPECT_NE(scene_content_hash(s), before);
+    // --aov: each set of layers its own hash; none, the hash from before AOVs existed.
+    s = loaded;
+    s.film.aovs.add(AovLayer::kAlbedo);  // --aov albedo
+    const uint64_t albedo = scene_content_hash(s);
+    EXPECT_NE(albedo, before);
+    s.film.aovs.add(AovLayer::kDepth);  // --aov albedo,depth
+    EXPECT_NE(scene_content_hash(s), albedo);
+    EXPECT_NE(scene_content_hash(s), before);
+    s.film.aovs = {};  // --aov none
+    EXPECT_EQ(scene_content_hash(s), before);
 }
 
 }  // namespace
