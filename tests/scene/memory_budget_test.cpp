@@ -27,6 +27,15 @@ TEST(MemoryEstimate, FilmTakes72BytesPerPixel) {
     EXPECT_EQ(film_memory_bytes(0, 480), 0u);
 }
 
+TEST(MemoryEstimate, AovLayersAddTheirSumsAndImages) {
+    EXPECT_EQ(aov_memory_bytes(640, 480, AovLayers{}), 0u);
+    AovLayers aovs;
+    aovs.add(AovLayer::kAlbedo);
+    aovs.add(AovLayer::kDepth);
+    // (3 + 1) doubles in two films, and two resolved layers with their outputs.
+    EXPECT_EQ(aov_memory_bytes(640, 480, aovs), uint64_t(640) * 480 * (4 * 16 + 2 * 24));
+}
+
 TEST(MemoryEstimate, MeshGrowsWithCountsAndAttributes) {
     const uint64_t plain = mesh_memory_bytes(1000, 2000, false, false);
     EXPECT_EQ(plain, 1000u * 24 + 2000u * 152);

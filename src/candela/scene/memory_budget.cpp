@@ -100,6 +100,13 @@ uint64_t film_memory_bytes(int width, int height) {
     return times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))), kFilmBytesPerPixel);
 }
 
+uint64_t aov_memory_bytes(int width, int height, AovLayers aovs) {
+    int layers = 0;
+    for (int l = 0; l < kAovLayerCount; ++l) layers += aovs.has(AovLayer(l)) ? 1 : 0;
+    const uint64_t per_pixel = uint64_t(aovs.value_count()) * (8 + 8) + uint64_t(layers) * (12 + 12);
+    return times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))), per_pixel);
+}
+
 uint64_t mesh_memory_bytes(uint64_t vertices, uint64_t triangles, bool normals, bool uvs) {
     const uint64_t per_vertex = kPositionBytes + (normals ? kNormalBytes : 0) + (uvs ? kUvBytes : 0);
     const uint64_t per_triangle = kTriangleBytes + (triangles <= kMaxTrianglesWithNormalTable ? kNormalTableBytes : 0);
@@ -132,6 +139,7 @@ uint64_t texture_loading_memory_bytes(uint64_t file_bytes, int width, int height
 
 uint64_t scene_memory_bytes(const Scene& scene) {
     uint64_t bytes = film_memory_bytes(scene.camera.width, scene.camera.height);
+    bytes = plus(bytes, aov_memory_bytes(scene.camera.width, scene.camera.height, scene.film.aovs));
     for (const TriangleMesh& m : scene.meshes)
         bytes = plus(bytes, mesh_memory_bytes(m.positions.size(), m.triangle_count(), !m.normals.empty(),
                                               !m.uvs.empty()));

@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "candela/film/aov_layers.h"
+
 namespace candela {
 
 struct Scene;
@@ -26,6 +28,9 @@ struct MemoryLimit {
 // A film of width x height pixels: the per-pixel double sums, the resolved float image, and one
 // encoded output (or checkpoint) in flight.
 uint64_t film_memory_bytes(int width, int height);
+// The AOV layers of such a film (film/aov_layers.h): their double sums in both films of a pass,
+// and per layer the resolved float image and one encoded output in flight. 0 for none.
+uint64_t aov_memory_bytes(int width, int height, AovLayers aovs);
 // A triangle mesh as rendered: its arrays, Embree's copies and BVH, and the light tables it
 // gets if it emits.
 uint64_t mesh_memory_bytes(uint64_t vertices, uint64_t triangles, bool normals, bool uvs);
