@@ -7,6 +7,7 @@
 
 #include "candela/core/error.h"
 #include "candela/image/image_io.h"
+#include "candela/image/image_layers.h"
 #include "candela/render/shard_merge.h"
 
 namespace fs = std::filesystem;
@@ -36,7 +37,8 @@ int run_merge(const MergeArgs& a) {
     const MergedRender merged = merge_shard_parts(std::vector<fs::path>(a.parts.begin(), a.parts.end()));
     const RenderState& state = merged.state;
     const Image image = state.film.resolve(state.samples_done);
-    for (const std::string& out : a.outputs) write_image(out, image, merged.output);
+    const std::vector<ImageLayer> layers = state.film.resolve_aovs(state.samples_done);
+    for (const std::string& out : a.outputs) write_image_with_layers(out, image, layers, merged.output);
     std::string outs;
     for (const std::string& out : a.outputs) outs += (outs.empty() ? "" : ", ") + out;
     const uint64_t dropped = state.dropped_samples;

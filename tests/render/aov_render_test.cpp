@@ -13,6 +13,8 @@
 #include "candela/film/pixel_filter.h"
 #include "candela/render/checkpoint.h"
 #include "candela/render/renderer.h"
+#include "candela/render/shard_merge.h"
+#include "candela/render/shard_part.h"
 #include "support/test_scenes.h"
 
 namespace candela {
@@ -245,6 +247,47 @@ TEST(AovRender, AovsAcrossCheckpointAndResumeEqualUninterrupted) {
                 << e.what();
         }
         fs::remove(file);
+    }
+}
+
+// Shard part files carry the AOV sums through the film's values: merged parts give the whole
+// render's layers bit for bit, and a part of a render with other layers is not resumed.
+TEST(AovRender, MergedShardPartsGiveTheWholeRendersLayers) {
+    const fs::path dir = fs::path(CANDELA_TEST_BINARY_DIR) / "aov_shards";
+    fs::create_directories(dir);
+    for (bool weighted : {false, true}) {
+        Scene s = test::lit_small_box_scene(37, 23, 4);
+        if (weighted) s.film.filter = filter_of(FilterType::kMitchell);
+        s.film.aovs = all_aovs();
+        const RenderResult whole = render(s, {.threads = 2});
+        std::vector<fs::path> files;
+        for (int i = 1; i <= 3; ++i) {
+            RenderOptions options{.threads = 1 + i % 2};
+            options.shard = Shard{i, 3};
+            const RenderResult part = render(s, options);
+            files.push_back(dir / ("part-" + std::to_string(i) + ".ckpt"));
+            write_shard_part(files.back(), render_identity(s, 0x5eed), part_info(s, options.shard), part.state);
+        }
+        const MergedRender merged = merge_shard_parts(files);
+        ASSERT_TRUE(merged.state.film.aovs() == s.film.aovs);
+        EXPECT_EQ(merged.identity.aov_layers, s.film.aovs.mask());
+        EXPECT_TRUE(same_bits(merged.state.film.resolve(merged.state.samples_done), whole.image));
+        const std::vector<ImageLayer> layers = merged.state.film.resolve_aovs(merged.state.samples_done);
+        ASSERT_EQ(layers.size(), whole.aov_layers.size());
+        for (size_t l = 0; l < layers.size(); ++l)
+            EXPECT_TRUE(same_bits(layers[l].image, whole.aov_layers[l].image)) << layers[l].name << " " << weighted;
+
+        // Resuming part 1 in a render without the normal layer is refused by name.
+        const ShardPart part = read_shard_part(files[0]);
+        Scene fewer = s;
+        fewer.film.aovs = {};
+        fewer.film.aovs.add(AovLayer::kAlbedo);
+        try {
+            check_part_matches(files[0], part, render_identity(fewer, 0x5eed), Shard{1, 3}, make_film(fewer));
+            ADD_FAILURE() << "a part with other AOV layers was accepted";
+        } catch (const SceneError& e) {
+            EXPECT_NE(std::string(e.what()).find("AOV layers"), std::string::npos) << e.what();
+        }
     }
 }
 

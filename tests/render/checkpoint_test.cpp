@@ -114,7 +114,7 @@ TEST(Checkpoint, LargeFilmRoundTripIsExact) {
     EXPECT_EQ(std::memcmp(c.state.film.sums().data(), sums.data(), sums.size() * sizeof(PixelSum)), 0);
 }
 
-// A film with AOV sums (format version 3), weighted or not: every value comes back, through
+// A film with AOV sums (format version 4), weighted or not: every value comes back, through
 // Film::read_region's order, and the header's layers say which sums there are.
 TEST(Checkpoint, AovFilmRoundTripIsExact) {
     for (bool weighted : {false, true}) {
@@ -136,8 +136,10 @@ TEST(Checkpoint, AovFilmRoundTripIsExact) {
         std::vector<double> back(values.size());
         c.state.film.read_region(all, back.data());
         EXPECT_EQ(std::memcmp(back.data(), values.data(), values.size() * sizeof(double)), 0);
-        // The header with the weighted flag and the layers, the values, the checksum.
-        EXPECT_EQ(fs::file_size(file), kHeaderBytes + 8 + values.size() * 8 + 8);
+        // The header with the film-values word and the (empty) adaptive settings, the values, the
+        // checksum.
+        EXPECT_EQ(fs::file_size(file), kHeaderBytes + 12 + values.size() * 8 + 8);
+        EXPECT_EQ(read_bytes(file)[8], 4);
 
         // The layers are part of what must match to resume, with their names in the message.
         RenderIdentity none = identity();
@@ -164,9 +166,15 @@ TEST(Checkpoint, CorruptAovHeaderIsRefused) {
     const fs::path file = temp_file("aov_header.ckpt");
     write_checkpoint(file, identity(), RenderState{Film(5, 3, false, aovs), 1, 0});
     std::string bytes = read_bytes(file);
-    bytes[kHeaderBytes + 4] = char(0x40);  // a layer bit past the last layer
+    bytes[kHeaderBytes + 1] = char(0x40);  // bit 14 of the film-values word: a layer past the last
     write_bytes(file, bytes);
-    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("corrupt checkpoint header"), std::string::npos);
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("this candela reads only weight sums and AOV layers"),
+              std::string::npos);
+    write_checkpoint(file, identity(), RenderState{Film(5, 3, false, aovs), 1, 0});
+    bytes = read_bytes(file);
+    bytes[kHeaderBytes + 4] = 16;  // adaptive sampling's min_spp, which this build does not write
+    write_bytes(file, bytes);
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("adaptive sampling 16"), std::string::npos);
 }
 
 // The checksum's hash (core/hash64.h): the same value however the bytes arrive.
@@ -244,9 +252,9 @@ TEST(Checkpoint, NewerFormatIsRefused) {
     const fs::path file = temp_file("newer.ckpt");
     write_checkpoint(file, identity(), state());
     std::string bytes = read_bytes(file);
-    bytes[8] = 4;  // the format version's low byte
+    bytes[8] = 5;  // the format version's low byte
     write_bytes(file, bytes);
-    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("format version 4; this candela reads versions 1 to 3"),
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("format version 5; this candela reads versions 1 to 4"),
               std::string::npos);
 }
 

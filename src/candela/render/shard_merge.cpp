@@ -43,7 +43,8 @@ void check_same_render(const fs::path& file, const ShardPart& part, const fs::pa
         fail(file, fmt::format("a part of another scene than {} (content hash {:016x}, there {:016x}: the scene file "
                                "or a file it names differs): parts of different renders cannot be merged",
                                first_file.string(), a.content_hash, b.content_hash));
-    if (part.values_per_pixel != first.values_per_pixel || part.weighted != first.weighted)
+    if (part.values_per_pixel != first.values_per_pixel || part.weighted != first.weighted ||
+        !(part.aovs == first.aovs))
         differ("film values per pixel", part.values_per_pixel, first.values_per_pixel);
     const FilmSettings &o = part.info.output, &p = first.info.output;
     if (o.tonemap != p.tonemap || o.exposure != p.exposure || o.transfer != p.transfer || o.gamma != p.gamma)
@@ -81,7 +82,7 @@ MergedRender merge_shard_parts(const std::vector<fs::path>& files) {
             merged.parts = shard.count;
             merged.target_spp = part.info.target_spp;
             merged.output = part.info.output;
-            merged.state = RenderState{Film(part.identity.width, part.identity.height, part.weighted),
+            merged.state = RenderState{Film(part.identity.width, part.identity.height, part.weighted, part.aovs),
                                        part.samples_done, 0};
             given.resize(size_t(shard.count));
         } else {

@@ -23,7 +23,6 @@ using namespace checkpoint_codec;
 static_assert(int(Tonemap::kClamp) == 0 && int(Tonemap::kExposure) == 1 && int(Tonemap::kReinhard) == 2 &&
               int(Tonemap::kAces) == 3);
 static_assert(int(Transfer::kSrgb) == 0 && int(Transfer::kGamma) == 1);
-constexpr uint32_t kWeightedFlag = 1;
 // What follows the common header: ten u32 and the pixel count.
 constexpr uint64_t kPartHeaderBytes = 10 * 4 + 8;
 
@@ -63,7 +62,7 @@ void write_shard_part(const fs::path& file, const RenderIdentity& identity, cons
     w.u32(info.target_spp);
     w.u32(uint32_t(kShardTileSize));
     w.u32(uint32_t(film.values_per_pixel()));
-    w.u32(film.weighted() ? kWeightedFlag : 0u);
+    w.u32((film.weighted() ? kWeightedFlag : 0u) | (film.aovs().mask() << kAovFlagShift));
     w.u32(uint32_t(info.output.tonemap));
     w.u32(float_bits(info.output.exposure));
     w.u32(uint32_t(info.output.transfer));
@@ -108,9 +107,13 @@ ShardPart read_shard_part(const fs::path& file) {
     if (tile_size != uint32_t(kShardTileSize))
         fail(file, fmt::format("a part of tiles of {} pixels; this candela cuts shards into tiles of {}", tile_size,
                                kShardTileSize));
-    if ((flags & ~kWeightedFlag) != 0) corrupt(fmt::format("unknown film flags {:#x}", flags));
+    if ((flags & ~(kWeightedFlag | (((1u << kAovLayerCount) - 1u) << kAovFlagShift))) != 0)
+        corrupt(fmt::format("unknown film flags {:#x}", flags));
     part.weighted = (flags & kWeightedFlag) != 0;
-    part.values_per_pixel = Film(1, 1, part.weighted).values_per_pixel();
+    for (int l = 0; l < kAovLayerCount; ++l)
+        if ((flags >> (kAovFlagShift + unsigned(l))) & 1u) part.aovs.add(AovLayer(l));
+    part.identity.aov_layers = part.aovs.mask();
+    part.values_per_pixel = Film(1, 1, part.weighted, part.aovs).values_per_pixel();
     if (values_per_pixel != uint32_t(part.values_per_pixel))
         fail(file, fmt::format("a part of a film with {} values per pixel; this candela's film{} has {}",
                                values_per_pixel, part.weighted ? " with weight sums" : "", part.values_per_pixel));
@@ -171,7 +174,8 @@ void check_part_matches(const fs::path& file, const ShardPart& part, const Rende
         fail(file, fmt::format("cannot resume: this is part {} of {}, the render asks for --shard {}/{} (resume it "
                                "with --shard {}/{})",
                                s.index, s.count, shard.index, shard.count, s.index, s.count));
-    if (part.values_per_pixel != film.values_per_pixel() || part.weighted != film.weighted())
+    if (part.values_per_pixel != film.values_per_pixel() || part.weighted != film.weighted() ||
+        !(part.aovs == film.aovs()))
         fail(file, fmt::format("cannot resume: the part's film keeps {} values per pixel, this render's {}",
                                part.values_per_pixel, film.values_per_pixel()));
 }

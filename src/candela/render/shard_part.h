@@ -53,6 +53,7 @@ struct ShardPart {
     RenderIdentity identity;
     PartInfo info;
     bool weighted = false;       // the film keeps weight sums
+    AovLayers aovs;              // the film's AOV layers (also in identity.aov_layers)
     int values_per_pixel = 0;    // Film::values_per_pixel()
     uint32_t samples_done = 0;   // per pixel of the part
     uint64_t dropped_samples = 0;
