@@ -124,8 +124,9 @@ TEST(Cli, RendersWithOverridesToEveryFormat) {
 // --aov: layers inside an .exr under their conventional channel names, and files beside a .png.
 TEST(Cli, AovFlagWritesLayersIntoExrAndBesideOtherFormats) {
     fs::path dir = temp_dir("aov");
-    CliResult r = run_candela("render " + kScene + " --spp 2 --resolution 24x16 --threads 2 --aov albedo,normal,depth,position" +
-                              " -o " + (dir / "img.exr").string() + " -o " + (dir / "img.png").string());
+    CliResult r = run_candela("render " + kScene +
+                              " --spp 2 --resolution 24x16 --threads 2 --aov albedo,normal,depth,position -o " +
+                              (dir / "img.exr").string() + " -o " + (dir / "img.png").string());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     std::vector<std::string> names = candela::read_exr_channel_names(dir / "img.exr");
     std::sort(names.begin(), names.end());

@@ -98,7 +98,8 @@ TEST(ImageLayers, OtherFormatsWriteOneFileBesideThemPerLayer) {
 TEST(ImageLayers, SideFileNames) {
     const ImageLayer albedo = make_layer("albedo", 3, {}, Image(1, 1));
     const ImageLayer depth = make_layer("depth", 1, {}, Image(1, 1));
-    EXPECT_EQ(layer_side_file("renders/frame.0001.png", albedo), std::filesystem::path("renders/frame.0001.albedo.png"));
+    EXPECT_EQ(layer_side_file("renders/frame.0001.png", albedo),
+              std::filesystem::path("renders/frame.0001.albedo.png"));
     EXPECT_EQ(layer_side_file("renders/frame.hdr", depth), std::filesystem::path("renders/frame.depth.pfm"));
 }
 

@@ -262,7 +262,8 @@ Image read_exr_channels(const fs::path& file, const std::vector<std::string>& na
         float* first[3] = {&image.pixels.data()->r, &image.pixels.data()->g, &image.pixels.data()->b};
         for (size_t c = 0; c < names.size() && c < 3; ++c) {
             if (!in.header().channels().findChannel(names[c])) fail(file, "OpenEXR image has no channel " + names[c]);
-            frame.insert(names[c], Imf::Slice::Make(Imf::FLOAT, first[c], dw, sizeof(Rgb), sizeof(Rgb) * size_t(image.width)));
+            frame.insert(names[c],
+                         Imf::Slice::Make(Imf::FLOAT, first[c], dw, sizeof(Rgb), sizeof(Rgb) * size_t(image.width)));
         }
         in.setFrameBuffer(frame);
         in.readPixels(dw.min.y, dw.max.y);

@@ -40,7 +40,8 @@ void write_image_with_layers(const fs::path& file, const Image& image, const std
                 i.pixels.size() != size_t(i.width) * size_t(i.height))
                 throw RenderError("refusing to write " + file.string() + ": " + what + " has the wrong size");
             for (const Rgb& p : i.pixels)
-                if (!p.is_finite()) throw RenderError("refusing to write " + file.string() + ": " + what + " is not finite");
+                if (!p.is_finite())
+                    throw RenderError("refusing to write " + file.string() + ": " + what + " is not finite");
         };
         check(image, "the image");
         for (const ImageLayer& layer : layers) check(layer.image, "AOV layer " + layer.name);
@@ -64,7 +65,9 @@ void write_image_with_layers(const fs::path& file, const Image& image, const std
     }
 }
 
-std::vector<std::string> read_exr_channel_names(const fs::path& file) { return image_formats::read_exr_channel_names(file); }
+std::vector<std::string> read_exr_channel_names(const fs::path& file) {
+    return image_formats::read_exr_channel_names(file);
+}
 
 Image read_exr_channels(const fs::path& file, const std::vector<std::string>& names) {
     return image_formats::read_exr_channels(file, names);

@@ -199,7 +199,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
                 abandon = RenderEnd::kDeadline;
                 break;
             }
-            if (next.width() != width || next.height() != height) next = Film(width, height, frame.weighted(), frame.aovs());
+            if (next.width() != width || next.height() != height)
+                next = Film(width, height, frame.weighted(), frame.aovs());
             const Pass pass{state.samples_done, state.samples_done + n, &state.film, &next};
             const Clock::time_point pass_start = Clock::now();
             run_pass(arena, pass, progress);
