@@ -18,9 +18,6 @@ AovLayers parse_aov_flag(const std::string& list) {
         const std::optional<AovLayer> layer = parse_aov_layer(name);
         if (!layer) bad(fmt::format("unknown AOV layer \"{}\"; expected one of: {}", name, kAovLayerNames));
         if (layers.has(*layer)) bad(fmt::format("AOV layer \"{}\" is listed twice", name));
-        if (!aov_layer_available(*layer))
-            bad(fmt::format("AOV layer \"{}\" is not available yet: it needs adaptive sampling's per-pixel statistics "
-                            "(issue 17)", name));
         layers.add(*layer);
     }
     if (list.back() == ',') bad(fmt::format("empty AOV layer name in \"{}\"", list));

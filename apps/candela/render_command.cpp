@@ -142,6 +142,7 @@ void apply_overrides(const RenderArgs& a, Scene& scene) {
     }
     apply_sensor_overrides(a, scene.film);
     if (a.aov) scene.film.aovs = parse_aov_flag(*a.aov);
+    apply_adaptive_overrides(a.adaptive, scene);
 }
 
 // Render statistics as JSON, for scripts (bench/run.sh) that should not parse the summary line.
@@ -315,7 +316,10 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
 #if CANDELA_HAVE_MPI
     if (mpi) check_same_scene(*mpi, identity.content_hash);
 #endif
-    RenderState start{make_film(scene)};
+    RenderOptions options;
+    apply_adaptive_options(a.adaptive, options);
+    if (mpi || shard) check_adaptive_alone(scene, options);
+    RenderState start{make_film(scene, needs_statistics(scene, options))};
     // A shard's checkpoints are its part files.
     auto save = [&, part = shard ? part_info(scene, *shard) : PartInfo{}](const RenderState& state) {
         if (shard)
@@ -332,6 +336,7 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
     } else if (a.resume && root) {
         Checkpoint resumed = read_checkpoint(*a.resume);
         check_checkpoint_matches(*a.resume, resumed.identity, identity);
+        check_resumed_statistics(*a.resume, resumed.state.film, scene, options);
         start = std::move(resumed.state);
     }
     if (a.resume && root) {
@@ -340,7 +345,6 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
                    scene.sampler.spp, nothing_left ? ", nothing left to render" : "");
     }
 
-    RenderOptions options;
     options.threads = a.threads.value_or(0);
     if (a.tile_size) options.tile_size = *a.tile_size;
     options.progress = root && isatty(fileno(stderr)) != 0;
@@ -417,11 +421,11 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
     const uint64_t dropped = result.state.dropped_samples;
     const std::string threads =
         job.ranks > 1 ? fmt::format("{} ranks x {} threads", job.ranks, s.threads) : fmt::format("{} threads", s.threads);
-    fmt::print(stderr, "candela: {}x{}, {} spp, {} in {} ({} build), {}rays ({}rays/s), {}{}; {}wrote {}\n",
+    fmt::print(stderr, "candela: {}x{}, {} spp, {} in {} ({} build), {}rays ({}rays/s), {}{}{}; {}wrote {}\n",
                result.image.width, result.image.height, spp, integrator_type_name(scene.integrator.type), format_duration(s.render_seconds),
                format_duration(s.build_seconds), format_count(double(s.rays.total())),
                format_count(s.render_seconds > 0 ? double(s.rays.total()) / s.render_seconds : 0.0), threads,
-               dropped ? fmt::format(", {} NaN/Inf samples dropped", dropped) : "",
+               dropped ? fmt::format(", {} NaN/Inf samples dropped", dropped) : "", adaptive_summary(result),
                stopped.empty() ? "" : stopped + "; ", outs);
     return exit_code;
 }
@@ -469,6 +473,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
     cmd->add_option("--aov", args.aov,
                     "Also write these layers, comma-separated: albedo, normal, depth, position (overrides film.aovs; "
                     "EXR layers, or files beside other formats)");
+    add_adaptive_flags(*cmd, args.adaptive);
 
     return cmd;
 }

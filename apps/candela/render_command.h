@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "adaptive_flags.h"
+
 namespace candela::cli {
 
 struct RenderArgs {
@@ -32,6 +34,7 @@ struct RenderArgs {
     std::optional<double> white_balance;     // kelvin; 0 = none
     std::optional<std::string> shard;        // "I/N": render part I of N to a part file (-o PART.ckpt)
     std::optional<std::string> aov;          // AOV layers, comma-separated (aov_flag.h)
+    AdaptiveArgs adaptive;                   // --noise-threshold, --min-spp, --target-error
 };
 
 // Adds the subcommand and its flags to the program; parsing fills `args`.

@@ -186,6 +186,8 @@ const BadInput kBadInputs[] = {
     {"unknown_texture.json", kUnknownName, kError, "", 3, 64, "/materials/m/albedo/texture",
      "unknown texture \"wod\"; defined textures: wood"},
     // --- numbers: negative, zero, NaN/Inf, beyond range (39)
+    {"adaptive_threshold_negative.json", kNumber, kError, "", 2, 53, "/sampler/adaptive/threshold",
+     "expected a number in (0, 1), got -0.01"},
     {"albedo_out_of_range.json", kNumber, kError, "", 3, 48, "/materials/red/albedo/1",
      "expected a number in [0, 1], got 1.2"},
     {"blend_amount_out_of_range.json", kNumber, kError, "", 5, 63, "/materials/m/amount",

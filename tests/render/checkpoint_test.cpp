@@ -168,13 +168,13 @@ TEST(Checkpoint, CorruptAovHeaderIsRefused) {
     std::string bytes = read_bytes(file);
     bytes[kHeaderBytes + 1] = char(0x40);  // bit 14 of the film-values word: a layer past the last
     write_bytes(file, bytes);
-    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("this candela reads only weight sums and AOV layers"),
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("corrupt checkpoint header: film values 0x4000"),
               std::string::npos);
     write_checkpoint(file, identity(), RenderState{Film(5, 3, false, aovs), 1, 0});
     bytes = read_bytes(file);
-    bytes[kHeaderBytes + 4] = 16;  // adaptive sampling's min_spp, which this build does not write
+    bytes[kHeaderBytes + 4] = 16;  // adaptive sampling's min_spp, without statistics or a threshold
     write_bytes(file, bytes);
-    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("adaptive sampling 16"), std::string::npos);
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("adaptive sampling settings 16, 0x0"), std::string::npos);
 }
 
 // The checksum's hash (core/hash64.h): the same value however the bytes arrive.
@@ -219,6 +219,8 @@ TEST(Checkpoint, EachDifferenceIsRefusedByName) {
         {[](RenderIdentity& id) { id.seed = 7; }, "the checkpoint has seed 7, this render seed 42"},
         {[](RenderIdentity& id) { id.sampler = "sobol"; }, "sampler sobol, this render independent"},
         {[](RenderIdentity& id) { id.integrator = "bsdf"; }, "integrator bsdf, this render path"},
+        {[](RenderIdentity& id) { id.adaptive = AdaptiveSettings{0.02f, 16}; },
+         "the checkpoint used adaptive sampling with threshold 0.02 and min_spp 16, this render no adaptive sampling"},
         {[](RenderIdentity& id) { id.content_hash ^= 1; }, "a different scene"},
     };
     for (const Case& c : cases) {
@@ -256,6 +258,79 @@ TEST(Checkpoint, NewerFormatIsRefused) {
     write_bytes(file, bytes);
     EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("format version 5; this candela reads versions 1 to 4"),
               std::string::npos);
+}
+
+// A film with statistics (and weights), of an adaptive render: version 4, every value exact.
+RenderState statistics_state() {
+    RenderState s{Film(5, 3, true, {}, true), 17, 4};
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x) {
+            const double i = double(y * 5 + x);
+            s.film.sum(x, y) = {i / 3.0, std::ldexp(1.0 + i, -1060), -i * 1e300};
+            s.film.weight(x, y) = -1.0 / 7.0 + i * 1e-3;
+            s.film.squares(x, y) = {i / 11.0, i * i, 1e-300 * i};
+            s.film.count(x, y) = 17.0 - i;
+        }
+    return s;
+}
+
+RenderIdentity adaptive_identity() {
+    RenderIdentity id = identity();
+    id.adaptive = AdaptiveSettings{0.015f, 24};
+    return id;
+}
+
+std::vector<double> film_values(const Film& film) {
+    std::vector<double> v(size_t(film.width() * film.height() * film.values_per_pixel()));
+    film.read_region(PixelBounds{0, 0, film.width(), film.height()}, v.data());
+    return v;
+}
+
+TEST(Checkpoint, StatisticsAndAdaptiveSettingsRoundTripInVersionFour) {
+    const fs::path file = temp_file("statistics.ckpt");
+    const RenderState s = statistics_state();
+    write_checkpoint(file, adaptive_identity(), s);
+    const std::string bytes = read_bytes(file);
+    EXPECT_EQ(bytes[8], 4);
+    // The header with the film's values and the adaptive settings, 8 values a pixel, the checksum.
+    EXPECT_EQ(bytes.size(), kHeaderBytes + 12 + 15 * 8 * 8 + 8);
+    const Checkpoint c = read_checkpoint(file);
+    ASSERT_TRUE(c.state.film.has_statistics());
+    ASSERT_TRUE(c.state.film.weighted());
+    const std::vector<double> written = film_values(s.film), read = film_values(c.state.film);
+    ASSERT_EQ(read.size(), written.size());
+    EXPECT_EQ(std::memcmp(read.data(), written.data(), read.size() * sizeof(double)), 0);
+    EXPECT_EQ(c.identity.adaptive, adaptive_identity().adaptive);
+    EXPECT_EQ(c.state.samples_done, 17u);
+    // Statistics without adaptive sampling (--target-error): version 4 too, no adaptive settings.
+    write_checkpoint(file, identity(), s);
+    EXPECT_EQ(read_bytes(file)[8], 4);
+    EXPECT_FALSE(read_checkpoint(file).identity.adaptive.has_value());
+    // An adaptive checkpoint refuses a render without adaptive sampling, and the other way round.
+    EXPECT_NE(error_of([&] { check_checkpoint_matches("a.ckpt", adaptive_identity(), identity()); })
+                  .find("the checkpoint used adaptive sampling with threshold 0.015 and min_spp 24, this render no "
+                        "adaptive sampling"),
+              std::string::npos);
+    RenderIdentity other = adaptive_identity();
+    other.adaptive->min_spp = 32;
+    EXPECT_NE(error_of([&] { check_checkpoint_matches("a.ckpt", adaptive_identity(), other); })
+                  .find("this render adaptive sampling with threshold 0.015 and min_spp 32"),
+              std::string::npos);
+}
+
+TEST(Checkpoint, EveryCorruptByteOfVersionFourIsAClearError) {
+    const fs::path file = temp_file("corrupt4.ckpt");
+    write_checkpoint(file, adaptive_identity(), statistics_state());
+    const std::string bytes = read_bytes(file);
+    for (size_t at = 0; at < bytes.size(); at += at < kHeaderBytes + 12 || at + 8 >= bytes.size() ? 1 : 13) {
+        for (int bit : {0, 7}) {
+            std::string damaged = bytes;
+            damaged[at] = char(damaged[at] ^ (1 << bit));
+            write_bytes(file, damaged);
+            std::string message = error_of([&] { read_checkpoint(file); });
+            EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << at << ": " << message;
+        }
+    }
 }
 
 TEST(Checkpoint, WeightSumsRoundTripInVersionTwo) {

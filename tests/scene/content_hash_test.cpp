@@ -128,6 +128,14 @@ TEST_F(ContentHash, ChangesWithEachCommandLineOverride) {
     EXPECT_NE(scene_content_hash(s), before);
     s.film.aovs = {};  // --aov none
     EXPECT_EQ(scene_content_hash(s), before);
+    s = loaded;
+    s.sampler.adaptive = AdaptiveSettings{0.05f, 16};  // --noise-threshold
+    const uint64_t adaptive = scene_content_hash(s);
+    EXPECT_NE(adaptive, before);
+    s.sampler.adaptive->min_spp = 32;  // --min-spp
+    EXPECT_NE(scene_content_hash(s), adaptive);
+    s.sampler.adaptive = AdaptiveSettings{0.06f, 16};
+    EXPECT_NE(scene_content_hash(s), adaptive);
 }
 
 }  // namespace

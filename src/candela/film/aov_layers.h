@@ -6,9 +6,9 @@
 //
 // The set is closed and small: a bit mask in a fixed order, which is also the order of the
 // values in a pixel and of the layers in the output. `variance` and `spp` are derived from the
-// adaptive sampler's per-pixel statistics, not from per-sample values: they have no sums here
-// (value_count 0), and until adaptive sampling lands they are refused by name
-// (aov_layer_available).
+// film's per-pixel statistics (film.h, film/pixel_statistics.h: the variance of each pixel's mean
+// and its sample count), not from per-sample values: they have no sums here (value_count 0), and
+// a film with either layer keeps statistics (render/renderer.h, make_film).
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -45,10 +45,6 @@ inline std::optional<AovLayer> parse_aov_layer(std::string_view name) {
     return std::nullopt;
 }
 
-// Whether this build can write the layer: `variance` and `spp` need the adaptive sampler's
-// per-pixel statistics (issue 17, points 1-2), which are not there yet.
-inline bool aov_layer_available(AovLayer layer) { return layer != AovLayer::kVariance && layer != AovLayer::kSpp; }
-
 // "albedo, normal, depth, position, variance, spp": the names, for messages.
 inline constexpr std::string_view kAovLayerNames = "albedo, normal, depth, position, variance, spp";
 
@@ -79,5 +75,10 @@ class AovLayers {
   private:
     uint32_t mask_ = 0;
 };
+
+// Whether a film with these layers needs statistics (film.h): the variance and spp layers.
+inline bool film_needs_statistics(AovLayers layers) {
+    return layers.has(AovLayer::kVariance) || layers.has(AovLayer::kSpp);
+}
 
 }  // namespace candela

@@ -11,6 +11,12 @@
 // With AOV layers (film/aov_layers.h) the film also sums, per pixel, each sample's AOV values
 // (albedo, normal, depth, position) times the same filter weight as its radiance, so the layers
 // resolve exactly like the beauty image. Films without AOVs allocate nothing for them.
+//
+// A film with statistics (adaptive sampling, a noise target, the variance and spp outputs) also
+// keeps per pixel the sum of its sample values' squares (r, g, b) and its sample count: what the
+// per-pixel variance of the mean needs (film/pixel_statistics.h), and the count because adaptive
+// sampling gives pixels different numbers of samples. That is 4 more doubles (32 bytes) per
+// pixel, only for such films: others keep their memory, speed and bits.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -31,6 +37,21 @@ inline void add_to_sum(PixelSum& sum, const Rgb& value) {
     sum[0] += double(value.r);
     sum[1] += double(value.g);
     sum[2] += double(value.b);
+}
+
+// Adds the squares of one sample's value (or of value * weight) to a running sum of squares.
+inline void add_square_to_sum(PixelSum& squares, const Rgb& value) {
+    for (int c = 0; c < 3; ++c) {
+        const double v = double(value[c]);
+        squares[size_t(c)] += v * v;
+    }
+}
+inline void add_weighted_square_to_sum(PixelSum& squares, const Rgb& value, float weight) {
+    const double w = double(weight);
+    for (int c = 0; c < 3; ++c) {
+        const double v = double(value[c]) * w;
+        squares[size_t(c)] += v * v;
+    }
 }
 
 // Adds value * weight to a running sum, the product in double.
@@ -58,8 +79,8 @@ class Film {
   public:
     Film() = default;  // 0 x 0
     // `weighted`: the film keeps per-pixel weight sums (all 0 to start); `aovs`: the AOV layers
-    // whose sums it keeps (all 0 to start).
-    Film(int width, int height, bool weighted = false, AovLayers aovs = {});
+    // whose sums it keeps (all 0 to start); `statistics`: sums of squares and sample counts.
+    Film(int width, int height, bool weighted = false, AovLayers aovs = {}, bool statistics = false);
     // A film holding these sums (row-major, width * height of them), e.g. read from a checkpoint;
     // `weights` is empty (an unweighted film) or has one weight sum per pixel.
     Film(int width, int height, std::vector<PixelSum> sums, std::vector<double> weights = {});
@@ -87,16 +108,26 @@ class Film {
     // Adds one sample's AOV values times `weight` to pixel (x, y)'s AOV sums.
     void add_aov_sample(int x, int y, const AovSample& sample, float weight);
 
+    bool has_statistics() const { return statistics_; }
+    // The sum of squared sample values and the sample count of pixel (x, y); films with
+    // statistics only.
+    PixelSum& squares(int x, int y) { return squares_[index(x, y)]; }
+    const PixelSum& squares(int x, int y) const { return squares_[index(x, y)]; }
+    double& count(int x, int y) { return counts_[index(x, y)]; }
+    double count(int x, int y) const { return counts_[index(x, y)]; }
+
     // The doubles the film keeps per pixel: the three sums, the weight sum for a weighted film,
-    // then the AOV sums. What checkpoints, shard parts and MPI messages carry for each pixel.
-    int values_per_pixel() const { return (weighted_ ? 4 : 3) + aov_values_; }
+    // the AOV sums, then for a film with statistics the three sums of squares and the sample
+    // count. What checkpoints, shard parts and MPI messages carry for each pixel.
+    int values_per_pixel() const { return (weighted_ ? 4 : 3) + aov_values_ + (statistics_ ? 4 : 0); }
     // Copies the values of the pixels in `region` (row-major, values_per_pixel() each) to `out`,
     // which has room for region.width() * region.height() * values_per_pixel() doubles; and back.
     void read_region(const PixelBounds& region, double* out) const;
     void write_region(const PixelBounds& region, const double* in);
 
-    // Unweighted: the mean over `samples_per_pixel` samples; weighted: each sum divided by its
-    // weight sum (0 where that is 0). As floats.
+    // Unweighted: the mean over `samples_per_pixel` samples (over the pixel's own sample count for
+    // a film with statistics); weighted: each sum divided by its weight sum (0 where that is 0).
+    // As floats.
     Image resolve(uint32_t samples_per_pixel) const;
     // The summed AOV layers, resolved like resolve(), in AovLayer order, named and with their
     // channels' names (film/aov_layers.h).
@@ -114,6 +145,9 @@ class Film {
     AovLayers aovs_;
     int aov_values_ = 0;  // aovs_.value_count()
     std::vector<double> aov_sums_;  // aov_values_ per pixel, row-major; empty without AOVs
+    bool statistics_ = false;
+    std::vector<PixelSum> squares_;  // with statistics only
+    std::vector<double> counts_;     // with statistics only
 };
 
 }  // namespace candela

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <bit>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -42,6 +43,7 @@ RenderIdentity render_identity(const Scene& scene, uint64_t content_hash) {
     id.width = bounds.width();
     id.height = bounds.height();
     id.aov_layers = scene.film.aovs.mask();
+    id.adaptive = scene.sampler.adaptive;
     return id;
 }
 
@@ -50,8 +52,8 @@ void write_checkpoint(const fs::path& file, const RenderIdentity& identity, cons
     RenderIdentity id = identity;
     id.width = film.width();
     id.height = film.height();
-    // Films without AOVs keep the formats they had before AOVs existed.
-    const bool describes_values = !film.aovs().empty();
+    // Other films keep the formats they had before AOVs and statistics existed.
+    const bool describes_values = !film.aovs().empty() || film.has_statistics() || identity.adaptive.has_value();
     Writer w;
     write_common_header(w,
                         describes_values ? kFilmValuesFormatVersion
@@ -59,9 +61,10 @@ void write_checkpoint(const fs::path& file, const RenderIdentity& identity, cons
                                           : kFormatVersion,
                         id, state.samples_done, state.dropped_samples);
     if (describes_values) {
-        w.u32((film.weighted() ? kWeightedFlag : 0u) | (film.aovs().mask() << kAovFlagShift));
-        w.u32(0);  // adaptive sampling's min_spp and threshold: none in this build
-        w.u32(0);
+        w.u32((film.weighted() ? kWeightedFlag : 0u) | (film.has_statistics() ? kStatisticsFlag : 0u) |
+              (film.aovs().mask() << kAovFlagShift));
+        w.u32(identity.adaptive ? uint32_t(identity.adaptive->min_spp) : 0u);
+        w.u32(identity.adaptive ? std::bit_cast<uint32_t>(identity.adaptive->threshold) : 0u);
     }
     write_checksummed(file, w, [&](Writer& out, const std::function<void()>& flush) {
         // Row by row, each pixel's values in Film::read_region's order.
@@ -77,7 +80,7 @@ void write_checkpoint(const fs::path& file, const RenderIdentity& identity, cons
 Checkpoint read_checkpoint(const fs::path& file) {
     // The header first: a damaged or foreign file of any size is refused before it is read whole.
     const uint64_t size = file_size_of(file);
-    std::string data = read_file_start(file, size, kMaxCommonHeaderBytes + 8);
+    std::string data = read_file_start(file, size, kMaxCommonHeaderBytes + 12);
     Reader r(std::string_view(data).substr(kMagic.size()));
     const CommonHeader h = read_common_header(file, r, size);
     if (h.format == kPartFormatVersion) {
@@ -88,26 +91,33 @@ Checkpoint read_checkpoint(const fs::path& file) {
                                                "resume it with --shard {}/{}, or merge the parts with candela merge",
                                                index, count, index, count));
     }
-    bool weighted = h.format == kWeightedFormatVersion;
+    bool weighted = h.format == kWeightedFormatVersion, statistics = false;
     AovLayers aovs;
+    std::optional<AdaptiveSettings> adaptive;
     if (h.format == kFilmValuesFormatVersion) {
-        const uint32_t values = r.u32(), min_spp = r.u32(), threshold = r.u32();
+        const uint32_t values = r.u32(), min_spp = r.u32(), threshold_bits = r.u32();
         const uint32_t aov_mask = values >> kAovFlagShift;
         if (r.truncated()) fail(file, fmt::format("truncated checkpoint: {} bytes, the header alone is longer", size));
-        if ((values & ~(kWeightedFlag | (((1u << kAovLayerCount) - 1u) << kAovFlagShift))) != 0 || min_spp != 0 ||
-            threshold != 0)
-            fail(file, fmt::format("checkpoint film values {:#x} (adaptive sampling {}, {:#x}): this candela reads only "
-                                   "weight sums and AOV layers",
-                                   values, min_spp, threshold));
+        if ((values & ~(kWeightedFlag | kStatisticsFlag | (((1u << kAovLayerCount) - 1u) << kAovFlagShift))) != 0)
+            fail(file, fmt::format("corrupt checkpoint header: film values {:#x}", values));
         weighted = (values & kWeightedFlag) != 0;
+        statistics = (values & kStatisticsFlag) != 0;
         for (int l = 0; l < kAovLayerCount; ++l)
             if ((aov_mask >> l) & 1u) aovs.add(AovLayer(l));
+        if (min_spp != 0 || threshold_bits != 0) {
+            const float threshold = std::bit_cast<float>(threshold_bits);
+            if (!statistics || min_spp < 2 || min_spp > (1u << 24) || !(threshold > 0.0f && threshold < 1.0f))
+                fail(file, fmt::format("corrupt checkpoint header: adaptive sampling settings {}, {:#x}", min_spp,
+                                       threshold_bits));
+            adaptive = AdaptiveSettings{threshold, int(min_spp)};
+        }
     }
     // Film::values_per_pixel() of the film below, which is allocated only once the size is right.
-    const size_t bytes_per_pixel = size_t((weighted ? 4 : 3) + aovs.value_count()) * 8;
+    const size_t bytes_per_pixel = size_t((weighted ? 4 : 3) + aovs.value_count() + (statistics ? 4 : 0)) * 8;
     Checkpoint c;
     c.identity = h.identity;
     c.identity.aov_layers = aovs.mask();
+    c.identity.adaptive = adaptive;
     const RenderIdentity& id = c.identity;
     const uint32_t width = uint32_t(id.width), height = uint32_t(id.height), samples = h.samples_done;
     const uint64_t dropped = h.dropped_samples;
@@ -124,7 +134,7 @@ Checkpoint read_checkpoint(const fs::path& file) {
     data = read_bytes(file, size);
     check_checksum(file, data);
 
-    Film film(id.width, id.height, weighted, aovs);
+    Film film(id.width, id.height, weighted, aovs, statistics);
     Reader body(std::string_view(data).substr(header, pixels * bytes_per_pixel));
     const size_t values = size_t(film.values_per_pixel());
     std::vector<double> row(size_t(width) * values);
@@ -161,6 +171,15 @@ void check_checkpoint_matches(const fs::path& file, const RenderIdentity& checkp
     if (checkpoint.aov_layers != render.aov_layers)
         refuse(fmt::format("the checkpoint has the AOV layers {}, this render {} (give the same --aov)",
                            aov_layer_list(checkpoint.aov_layers), aov_layer_list(render.aov_layers)));
+    if (checkpoint.adaptive != render.adaptive) {
+        auto describe = [](const std::optional<AdaptiveSettings>& a) {
+            return a ? fmt::format("adaptive sampling with threshold {:g} and min_spp {}", a->threshold, a->min_spp)
+                     : std::string("no adaptive sampling");
+        };
+        refuse(fmt::format("the checkpoint used {}, this render {} (give the same sampler.adaptive, "
+                           "--noise-threshold and --min-spp)",
+                           describe(checkpoint.adaptive), describe(render.adaptive)));
+    }
     if (checkpoint.content_hash != render.content_hash)
         refuse(fmt::format("the checkpoint is of a different scene: its content hash is {:016x}, this scene's {:016x} "
                            "(the scene file or a file it names changed; only the sample count may)",

@@ -8,10 +8,12 @@
 // then the shard, target spp, tile size, values per pixel, film flags and output settings, then
 // only the part's pixels; read_checkpoint refuses it (resume it with --shard, merge it with
 // candela merge), read_shard_part reads it. Version 4 is written for films with AOV layers
-// (film/aov_layers.h): its header describes the film's values, and each pixel has the film's
-// values_per_pixel() values in Film::read_region's order (r g b, the weight sum if weighted, then
-// the AOV sums). Its header has the layout the adaptive sampler's films use (its statistics bit
-// and settings are 0 here). Films without AOVs are written as versions 1 and 2, as before AOVs.
+// (film/aov_layers.h) or statistics (film.h: adaptive sampling, --target-error, the variance and
+// spp outputs) and for renders with adaptive sampling: its header describes the film's values and
+// the adaptive settings, and each pixel has the film's values_per_pixel() values in
+// Film::read_region's order (r g b, the weight sum if weighted, the AOV sums, then the sums of
+// squares and the sample count). Other films are written as versions 1 and 2, byte for byte as
+// before.
 // Integers are unsigned little-endian; a string is a u32 byte count (at most 64) and its bytes;
 // sums are IEEE 754 binary64, little-endian.
 //
@@ -26,10 +28,11 @@
 //   samples done     u32      per pixel
 //   dropped samples  u64      NaN/Inf samples among them, counted as zero
 //   version 4 only:
-//     film values    u32      bit 0: weight sums; bit 1: adaptive sampling's statistics (not
-//                             written by this build); bits 8..13: the AOV layers, bit 8 + i for
-//                             AovLayer(i) (albedo, normal, depth, position, variance, spp)
-//     adaptive       u32, u32 adaptive sampling's min_spp and threshold bits: 0, 0 here
+//     film values    u32      bit 0: weight sums; bit 1: statistics (sums of squares, counts);
+//                             bits 8..13: the AOV layers, bit 8 + i for AovLayer(i) (albedo,
+//                             normal, depth, position, variance, spp)
+//     adaptive       u32, u32 sampler.adaptive's min_spp and the threshold's binary32 bits; 0, 0
+//                             without adaptive sampling
 //   sums             f64 x 3 x width x height: per pixel, row-major from the top left, r g b,
 //                             exactly the Film's sums; version 2: f64 x 4, r g b and the
 //                             pixel's weight sum; version 4: f64 x values_per_pixel()
@@ -39,7 +42,10 @@
 // Ctrl-C never leaves a half-written checkpoint in place of a good one.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
+
+#include "candela/render/render_settings.h"
 
 #include "candela/render/render_state.h"
 
@@ -57,6 +63,7 @@ struct RenderIdentity {
     int width = 0;
     int height = 0;
     uint32_t aov_layers = 0;  // AovLayers::mask() of the film's AOV layers (0: none)
+    std::optional<AdaptiveSettings> adaptive;  // sampler.adaptive; none in versions 1 to 3
 };
 
 struct Checkpoint {
@@ -78,8 +85,8 @@ void write_checkpoint(const std::filesystem::path& file, const RenderIdentity& i
 Checkpoint read_checkpoint(const std::filesystem::path& file);
 
 // Throws SceneError naming `file` and the first thing in which the checkpoint's identity differs
-// from the render's: candela version, resolution, seed, sampler, integrator, AOV layers, then the
-// scene content (the scene file or a file it names).
+// from the render's: candela version, resolution, seed, sampler, integrator, AOV layers, adaptive
+// sampling, then the scene content (the scene file or a file it names).
 void check_checkpoint_matches(const std::filesystem::path& file, const RenderIdentity& checkpoint,
                               const RenderIdentity& render);
 

@@ -7,12 +7,14 @@
 #include <string>
 
 #include "candela/camera/camera.h"
+#include "candela/core/check.h"
 #include "candela/core/error.h"
 #include "candela/film/film.h"
 #include "candela/film/pixel_filter.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/lights/light_set.h"
 #include "candela/render/aov_tracer.h"
+#include "candela/render/adaptive_sampling.h"
 #include "candela/render/integrator.h"
 #include "candela/render/renderer.h"
 #include "candela/sampling/sampler.h"
@@ -32,6 +34,7 @@ struct SampleContext {
     const PixelFilter& filter;
     PixelBounds bounds;  // the film's pixels within the full image (the crop window)
     const AovTracer* aov_tracer;  // null when the film has no AOV layers
+    std::optional<AdaptiveSettings> adaptive;
 };
 
 // Camera sample `s` of pixel (x, y) of the full image, added to the pixel's running sum (and its
@@ -42,11 +45,12 @@ struct SampleContext {
 // then the camera's lens point if it has a lens (camera_model.h). WithAovs: the sample's AOV
 // values (render/aov_tracer.h) are added, with the same filter weight, to pixel `film_pixel` of
 // `to`, after the radiance has taken its random numbers; a sample whose radiance is dropped keeps
-// its AOV values, which are always finite.
-template <bool Weighted, bool WithAovs, CameraModel CameraT>
+// its AOV values, which are always finite. Statistics: the value's square is also added to
+// `squares` (a dropped sample counts as zero there too; the caller counts samples).
+template <bool Weighted, bool WithAovs, bool Statistics = false, CameraModel CameraT>
 void take_sample(const SampleContext& c, const CameraT& camera, int x, int y, uint32_t s,
                  const PixelSampler& pixel_sampler, PixelSum& sum, double& weight_sum, TileTally& tally, Film& to,
-                 Vec2i film_pixel) {
+                 Vec2i film_pixel, PixelSum* squares = nullptr) {
     Sampler sampler = pixel_sampler.sample(s);
     const FilterSample f = c.filter.sample(s, sampler.next_vec2f());
     Vec2f film_pos = Vec2f(float(x), float(y)) + f.position;
@@ -64,6 +68,12 @@ void take_sample(const SampleContext& c, const CameraT& camera, int x, int y, ui
         add_weighted_to_sum(sum, L, f.weight);
     else
         add_to_sum(sum, L);
+    if constexpr (Statistics) {
+        if constexpr (Weighted)
+            add_weighted_square_to_sum(*squares, L, f.weight);
+        else
+            add_square_to_sum(*squares, L);
+    }
 }
 
 // The samples [begin, end) of one tile's pixels, for one kind of camera and filter, with or without
@@ -94,6 +104,41 @@ void render_pixels(const SampleContext& c, const CameraT& camera, const Tile& ti
     }
 }
 
+// render_pixels for a film with statistics: also the sums of squares and the counts, and with
+// adaptive sampling only the tile's blocks that are still active (adaptive_sampling.h) take
+// samples; the others are copied. A separate function, so that films without statistics keep
+// their loop as it was.
+template <bool Weighted, bool WithAovs, CameraModel CameraT>
+void render_pixels_with_statistics(const SampleContext& c, const CameraT& camera, const Tile& tile, uint32_t begin,
+                                   uint32_t end, const Film& from, Film& to, TileTally& tally) {
+    for (const PixelBounds& block : tile_blocks(tile)) {
+        const bool active = !c.adaptive || block_active(from, block, begin, *c.adaptive);
+        for (int y = block.y0; y < block.y1; ++y) {
+            for (int x = block.x0; x < block.x1; ++x) {
+                PixelSum sum = from.sum(x, y);
+                PixelSum squares = from.squares(x, y);
+                double weight_sum = Weighted ? from.weight(x, y) : 0.0;
+                double count = from.count(x, y);
+                if constexpr (WithAovs)
+                    if (&from != &to) std::copy_n(from.aov_sums(x, y), from.aovs().value_count(), to.aov_sums(x, y));
+                if (active) {
+                    const int full_x = x + c.bounds.x0, full_y = y + c.bounds.y0;
+                    const PixelSampler pixel_sampler(c.sampler_type,
+                                                     uint64_t(full_y) * uint64_t(c.width) + uint64_t(full_x), c.seed);
+                    for (uint32_t s = begin; s < end; ++s)
+                        take_sample<Weighted, WithAovs, true>(c, camera, full_x, full_y, s, pixel_sampler, sum,
+                                                              weight_sum, tally, to, Vec2i(x, y), &squares);
+                    count += double(end - begin);
+                }
+                to.sum(x, y) = sum;
+                to.squares(x, y) = squares;
+                to.count(x, y) = count;
+                if constexpr (Weighted) to.weight(x, y) = weight_sum;
+            }
+        }
+    }
+}
+
 }  // namespace
 
 // Built in this order, each reading the ones before.
@@ -115,7 +160,7 @@ struct FrameRenderer::Parts {
           filter(scene.film.filter),
           aov_tracer(scene.film.aovs.empty() ? std::nullopt : std::make_optional<AovTracer>(scene, accel)),
           context{*integrator, scene.camera.width, scene.sampler.seed, scene.sampler.type, filter, bounds,
-                  aov_tracer ? &*aov_tracer : nullptr},
+                  aov_tracer ? &*aov_tracer : nullptr, scene.sampler.adaptive},
           aovs(scene.film.aovs) {}
     AovLayers aovs;
 };
@@ -139,9 +184,14 @@ void FrameRenderer::render_tile(const Tile& tile, uint32_t begin, uint32_t end, 
                                 TileTally& tally) const {
     const Parts& p = *parts_;
     const bool aovs = p.aov_tracer.has_value();
+    const bool statistics = from.has_statistics();
+    CANDELA_CHECK(to.has_statistics() == statistics && (statistics || !p.context.adaptive));
     auto run = [&](auto weighted, auto with_aovs) {
         visit([&](const auto& cam) {
-            render_pixels<weighted(), with_aovs()>(p.context, cam, tile, begin, end, from, to, tally);
+            if (statistics)
+                render_pixels_with_statistics<weighted(), with_aovs()>(p.context, cam, tile, begin, end, from, to, tally);
+            else
+                render_pixels<weighted(), with_aovs()>(p.context, cam, tile, begin, end, from, to, tally);
         }, p.camera);
     };
     if (p.filter.weighted())

@@ -44,7 +44,11 @@ class FrameRenderer {
 
     // Samples [begin, end) of the tile's pixels: each pixel's sum (and weight sum) is read from
     // `from`, the samples are added in index order, and the result is written to `to`, which may
-    // be `from`. Thread-safe for tiles that do not overlap.
+    // be `from`. Thread-safe for tiles that do not overlap. For films with statistics (film.h)
+    // also the sums of squares and counts; with adaptive sampling (adaptive_sampling.h) only the
+    // tile's active blocks take samples, the others are copied: then the tile must be aligned to
+    // the block size, and no decision point may lie inside (begin, end). Adaptive
+    // sampling needs films with statistics.
     void render_tile(const Tile& tile, uint32_t begin, uint32_t end, const Film& from, Film& to,
                      TileTally& tally) const;
 

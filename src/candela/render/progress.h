@@ -22,6 +22,12 @@ class ProgressBar {
         done_.fetch_add(units, std::memory_order_relaxed);
         rays_.fetch_add(rays, std::memory_order_relaxed);
     }
+    // A short text shown after the rate (e.g. the estimated error), from the calling thread.
+    void set_note(std::string note) {
+        if (!enabled_) return;
+        std::lock_guard lock(mutex_);
+        note_ = std::move(note);
+    }
 
   private:
     void draw(bool final_line) const;
@@ -35,6 +41,7 @@ class ProgressBar {
     std::condition_variable wake_;
     bool stop_ = false;
     std::thread drawer_;
+    std::string note_;  // guarded by mutex_
 };
 
 // Human-readable durations and rates for progress and summary lines: "1m05s", "12.3M".

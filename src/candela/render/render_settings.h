@@ -1,6 +1,7 @@
 #pragma once
 // The integrator and sampler sections of the scene file.
 #include <cstdint>
+#include <optional>
 
 #include "candela/lights/light_selection.h"
 #include "candela/math/constants.h"
@@ -25,10 +26,19 @@ struct IntegratorSettings {
     bool spectral = false;            // transport four wavelengths per path (path, bsdf, whitted)
 };
 
+// sampler.adaptive (render/adaptive_sampling.h): after min_spp samples, a block of pixels whose
+// estimated relative error is below the threshold receives no more samples.
+struct AdaptiveSettings {
+    float threshold = 0.01f;  // relative standard error, sqrt of the pixel's estimated relMSE
+    int min_spp = 16;         // samples every pixel takes before the first decision (>= 2)
+    bool operator==(const AdaptiveSettings&) const = default;
+};
+
 struct SamplerSettings {
     SamplerType type = SamplerType::kSobol;  // the faster to a given error (bench/RESULTS.md)
-    int spp = 16;
+    int spp = 16;                            // with adaptive sampling: the most a pixel takes
     uint64_t seed = 0;
+    std::optional<AdaptiveSettings> adaptive;  // none: every pixel takes spp samples
 };
 
 }  // namespace candela

@@ -7,6 +7,8 @@
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -16,9 +18,11 @@
 
 #include "candela/core/error.h"
 #include "candela/film/film.h"
+#include "candela/film/pixel_statistics.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/lights/light_set.h"
 #include "candela/film/pixel_filter.h"
+#include "candela/render/adaptive_sampling.h"
 #include "candela/render/frame_renderer.h"
 #include "candela/render/pass_schedule.h"
 #include "candela/render/progress.h"
@@ -44,7 +48,7 @@ struct Pass {
 
 // Throws RenderError when `start` cannot continue a render of `frame`: another size, or weight
 // sums where the pixel filter has none or the other way round.
-void check_start_state(const FrameRenderer& frame, const RenderState& start) {
+void check_start_state(const FrameRenderer& frame, const RenderState& start, bool statistics) {
     const int width = frame.width(), height = frame.height();
     if (start.film.width() != width || start.film.height() != height)
         throw RenderError("render: the start state is " + std::to_string(start.film.width()) + "x" +
@@ -55,6 +59,17 @@ void check_start_state(const FrameRenderer& frame, const RenderState& start) {
                           " the weight sums that the pixel filter " + (frame.weighted() ? "needs" : "does not use"));
     if (!(start.film.aovs() == frame.aovs()))
         throw RenderError("render: the start state's AOV layers are not the ones the scene asks for");
+    if (statistics && !start.film.has_statistics())
+        throw RenderError("render: the start state lacks the per-pixel statistics (sums of squares, sample counts) "
+                          "that adaptive sampling and a target error need");
+}
+
+// The tiles' pixels, as regions for the film's reductions.
+std::vector<PixelBounds> tile_regions(const std::vector<Tile>& tiles) {
+    std::vector<PixelBounds> regions;
+    regions.reserve(tiles.size());
+    for (const Tile& tile : tiles) regions.push_back(tile.bounds());
+    return regions;
 }
 
 }  // namespace
@@ -116,18 +131,26 @@ PixelBounds render_pixel_bounds(const Scene& scene) {
     return crop_pixel_bounds(scene.camera.width, scene.camera.height, scene.film.crop_window);
 }
 
-Film make_film(const Scene& scene) {
+Film make_film(const Scene& scene, bool statistics) {
     const PixelBounds bounds = render_pixel_bounds(scene);
-    return Film(bounds.width(), bounds.height(), is_tabulated(scene.film.filter.type), scene.film.aovs);
+    return Film(bounds.width(), bounds.height(), is_tabulated(scene.film.filter.type), scene.film.aovs,
+                statistics || scene.sampler.adaptive.has_value() || film_needs_statistics(scene.film.aovs));
 }
 
-std::vector<Tile> render_tiles(int width, int height, const RenderOptions& options) {
+bool needs_statistics(const Scene& scene, const RenderOptions& options) {
+    return scene.sampler.adaptive.has_value() || options.target_error > 0.0 || options.statistics ||
+           film_needs_statistics(scene.film.aovs);
+}
+
+std::vector<Tile> render_tiles(int width, int height, const RenderOptions& options, bool adaptive) {
+    static_assert(kShardTileSize % kAdaptiveBlockSize == 0, "shard tiles must hold whole adaptive blocks");
     if (options.shard.count > 1) return shard_tiles(width, height, options.shard);
-    return make_tiles(width, height, std::max(1, options.tile_size));
+    const int size = std::max(1, options.tile_size);
+    return make_tiles(width, height, adaptive ? adaptive_tile_size(size) : size);
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& options) {
-    return render(scene, options, RenderState{make_film(scene)});
+    return render(scene, options, RenderState{make_film(scene, needs_statistics(scene, options))});
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& options, RenderState start) {
@@ -135,13 +158,18 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
     const FrameRenderer frame(scene);
     result.stats.build_seconds = frame.build_seconds();
     const int width = frame.width(), height = frame.height();
-    check_start_state(frame, start);
+    const bool statistics = needs_statistics(scene, options);
+    check_start_state(frame, start, statistics);
+    const std::optional<AdaptiveSettings>& adaptive = scene.sampler.adaptive;
+    // Passes end at decision points (adaptive_sampling.h) when decisions or target checks are made.
+    const uint32_t first_decision = adaptive ? uint32_t(adaptive->min_spp) : kFirstTargetCheck;
     const auto spp = uint32_t(scene.sampler.spp);
     RenderState& state = result.state;
     state = std::move(start);
     const uint32_t start_samples = state.samples_done;
     Film next;  // the second buffer of a pass (see Pass), allocated when there is one
-    const std::vector<Tile> tiles = render_tiles(width, height, options);
+    const std::vector<Tile> tiles = render_tiles(width, height, options, adaptive.has_value());
+    const std::vector<PixelBounds> regions = state.film.has_statistics() ? tile_regions(tiles) : std::vector<PixelBounds>{};
     uint64_t pixels = 0;  // that the tiles cover
     for (const Tile& tile : tiles) pixels += uint64_t(tile.pixels());
     int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
@@ -183,24 +211,41 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
         });
     };
 
+    const double samples_before = state.film.has_statistics() ? spp_summary(state.film, regions).total : 0.0;
+    // At a decision point: whether the render is done because every pixel stopped, or the
+    // estimate met the target. Also the estimate for the progress bar.
+    auto converged = [&](ProgressBar& progress) {
+        if (!state.film.has_statistics() || state.samples_done == 0) return false;
+        const double estimate = estimated_relmse(state.film, regions);
+        result.stats.relmse_estimate = estimate;
+        progress.set_note(fmt::format("relMSE ~{:.3g}", estimate));
+        if (!is_decision_point(state.samples_done, first_decision)) return false;
+        if (options.target_error > 0.0 && estimate <= options.target_error) return true;
+        return adaptive && active_pixels(state.film, tiles, state.samples_done, *adaptive) == 0;
+    };
+
     Clock::time_point render_start = Clock::now();
     {
         ProgressBar progress(pixels * (spp - std::min(spp, start_samples)), options.progress);
         tbb::task_arena arena(threads);
         PassTiming previous;
-        while (state.samples_done < spp) {
+        result.stats.converged = converged(progress);
+        while (state.samples_done < spp && !result.stats.converged) {
             if (check_stop()) break;
             std::optional<double> seconds_left;
             if (options.deadline)
                 seconds_left = std::chrono::duration<double>(*options.deadline - Clock::now()).count();
+            uint32_t remaining = spp - state.samples_done;
+            if (adaptive || options.target_error > 0.0)
+                remaining = std::min(remaining, next_decision_point(state.samples_done, first_decision) - state.samples_done);
             const uint32_t n =
-                next_pass_spp(previous, spp - state.samples_done, options.pass_seconds, seconds_left, options.pass_spp);
+                next_pass_spp(previous, remaining, options.pass_seconds, seconds_left, options.pass_spp);
             if (n == 0) {  // not one more sample per pixel fits before the deadline
                 abandon = RenderEnd::kDeadline;
                 break;
             }
             if (next.width() != width || next.height() != height)
-                next = Film(width, height, frame.weighted(), frame.aovs());
+                next = Film(width, height, frame.weighted(), frame.aovs(), state.film.has_statistics());
             const Pass pass{state.samples_done, state.samples_done + n, &state.film, &next};
             const Clock::time_point pass_start = Clock::now();
             run_pass(arena, pass, progress);
@@ -215,12 +260,15 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
             ++result.stats.passes;
             previous = {n, seconds_since(pass_start)};
             if (options.on_pass) options.on_pass(state);
+            result.stats.converged = converged(progress);
         }
     }
     result.end = abandon.load();
     result.stats.render_seconds = seconds_since(render_start);
     for (const TileTally& t : tallies) result.stats.rays += t.rays;
-    result.stats.samples = pixels * (state.samples_done - start_samples);
+    result.stats.samples = state.film.has_statistics()
+                               ? uint64_t(spp_summary(state.film, regions).total - samples_before)
+                               : pixels * (state.samples_done - start_samples);
     result.image = state.film.resolve(state.samples_done);
     result.aov_layers = state.film.resolve_aovs(state.samples_done);
     return result;

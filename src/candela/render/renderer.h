@@ -44,6 +44,12 @@ struct RenderOptions {
     // Render only this part of the image (shard.h); the other pixels keep the start state's sums.
     // A part other than 1/1 cuts tiles of kShardTileSize, whatever tile_size says.
     Shard shard = {};
+    // > 0: stop at the first decision point (adaptive_sampling.h) where the image's estimated
+    // relMSE (film/pixel_statistics.h) is at most this. Needs a film with statistics.
+    double target_error = 0.0;
+    // Keep per-pixel statistics (film.h) without adaptive sampling or a target, e.g. for the
+    // variance and spp outputs (film/pixel_statistics.h: variance_image, spp_image).
+    bool statistics = false;
 };
 
 // Why render() returned.
@@ -61,6 +67,11 @@ struct RenderStats {
     RayCounters rays;           // all rays traced, abandoned passes included
     int threads = 0;
     int passes = 0;             // complete passes, in this call
+    // Films with statistics: the estimated relMSE of the final image (over the rendered tiles),
+    // and whether the render ended because every pixel stopped (adaptive sampling) or the
+    // estimate met options.target_error.
+    std::optional<double> relmse_estimate;
+    bool converged = false;
 };
 
 struct RenderResult {
@@ -86,17 +97,23 @@ RenderResult render(const Scene& scene, const RenderOptions& options);
 // the film's crop window.
 PixelBounds render_pixel_bounds(const Scene& scene);
 // The empty film a render of `scene` starts from: the crop window's size, with weight sums when
-// the pixel filter's samples have weights, and AOV sums for the scene's AOV layers.
-Film make_film(const Scene& scene);
+// the pixel filter's samples have weights, AOV sums for the scene's AOV layers, and statistics
+// (film.h) when `statistics` is true or the scene samples adaptively.
+Film make_film(const Scene& scene, bool statistics = false);
+
+// Whether a render of `scene` with `options` needs a film with statistics: adaptive sampling, a
+// target error, options.statistics, or the variance or spp AOV layer.
+bool needs_statistics(const Scene& scene, const RenderOptions& options);
 
 // The tiles a render of a width x height film with `options` renders: all of them, or those of
-// options.shard.
-std::vector<Tile> render_tiles(int width, int height, const RenderOptions& options);
+// options.shard. `adaptive`: sizes rounded up to a multiple of the adaptive block size.
+std::vector<Tile> render_tiles(int width, int height, const RenderOptions& options, bool adaptive = false);
 
 // Continues `start`, a state of the same scene (e.g. read from a checkpoint), up to
 // scene.sampler.spp samples per pixel; when it already has as many or more, renders nothing and
 // returns it. The result is bit-identical to an uninterrupted render. Throws RenderError when
-// start's film is not the scene's resolution.
+// start's film is not the scene's resolution, or lacks the statistics that adaptive sampling or a
+// target error needs.
 RenderResult render(const Scene& scene, const RenderOptions& options, RenderState start);
 
 }  // namespace candela

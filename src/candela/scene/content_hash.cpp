@@ -92,6 +92,13 @@ uint64_t scene_content_hash(std::string_view json_text, const Scene& scene) {
     if (scene.integrator.spectral) hash.add_field("spectral");
     hash.add_field(sampler_type_name(scene.sampler.type));
     hash.add_u64(scene.sampler.seed);
+    // Adaptive sampling (the scene key or --noise-threshold, --min-spp): only when on, so that
+    // other renders keep their checkpoints' hashes.
+    if (const auto& a = scene.sampler.adaptive) {
+        hash.add_field("adaptive");
+        hash.add_u64(std::bit_cast<uint32_t>(a->threshold));
+        hash.add_u64(uint64_t(a->min_spp));
+    }
     // The sensor (--iso, --exposure-time, --white-balance), applied to every sample: only when
     // not pbrt-v4's defaults, so that checkpoints from before these keys keep their hashes.
     const FilmSettings defaults;

@@ -22,6 +22,8 @@ namespace {
 // resolved float image (12), and one output image being encoded (12). A resume also holds the
 // checkpoint's sums while reading them (24), which the same bound covers with the output's room.
 constexpr uint64_t kFilmBytesPerPixel = 24 + 24 + 12 + 12;
+// With statistics: three sums of squares and a count (32) in each of the two films.
+constexpr uint64_t kFilmStatisticsBytesPerPixel = 32 + 32;
 // Per vertex: the position and Embree's copy of it; normals and uvs when the mesh has them.
 constexpr uint64_t kPositionBytes = 12 + 12;
 constexpr uint64_t kNormalBytes = 12;
@@ -107,6 +109,10 @@ uint64_t aov_memory_bytes(int width, int height, AovLayers aovs) {
     return times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))), per_pixel);
 }
 
+uint64_t film_statistics_memory_bytes(int width, int height) {
+    return times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))), kFilmStatisticsBytesPerPixel);
+}
+
 uint64_t mesh_memory_bytes(uint64_t vertices, uint64_t triangles, bool normals, bool uvs) {
     const uint64_t per_vertex = kPositionBytes + (normals ? kNormalBytes : 0) + (uvs ? kUvBytes : 0);
     const uint64_t per_triangle = kTriangleBytes + (triangles <= kMaxTrianglesWithNormalTable ? kNormalTableBytes : 0);
@@ -140,6 +146,8 @@ uint64_t texture_loading_memory_bytes(uint64_t file_bytes, int width, int height
 uint64_t scene_memory_bytes(const Scene& scene) {
     uint64_t bytes = film_memory_bytes(scene.camera.width, scene.camera.height);
     bytes = plus(bytes, aov_memory_bytes(scene.camera.width, scene.camera.height, scene.film.aovs));
+    if (scene.sampler.adaptive || film_needs_statistics(scene.film.aovs))
+        bytes = plus(bytes, film_statistics_memory_bytes(scene.camera.width, scene.camera.height));
     for (const TriangleMesh& m : scene.meshes)
         bytes = plus(bytes, mesh_memory_bytes(m.positions.size(), m.triangle_count(), !m.normals.empty(),
                                               !m.uvs.empty()));

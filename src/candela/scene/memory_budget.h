@@ -31,6 +31,9 @@ uint64_t film_memory_bytes(int width, int height);
 // The AOV layers of such a film (film/aov_layers.h): their double sums in both films of a pass,
 // and per layer the resolved float image and one encoded output in flight. 0 for none.
 uint64_t aov_memory_bytes(int width, int height, AovLayers aovs);
+// The statistics a film keeps for adaptive sampling or a noise target (film/film.h): sums of
+// squares and counts, in both films of a pass.
+uint64_t film_statistics_memory_bytes(int width, int height);
 // A triangle mesh as rendered: its arrays, Embree's copies and BVH, and the light tables it
 // gets if it emits.
 uint64_t mesh_memory_bytes(uint64_t vertices, uint64_t triangles, bool normals, bool uvs);

@@ -143,11 +143,11 @@ TEST(SceneLoaderFilm, BadAovsAreLocatedErrors) {
     SceneError not_array = load_error(R"({"film": {"aovs": "albedo"}})");
     EXPECT_EQ(not_array.where().json_pointer, "/film/aovs");
     EXPECT_NE(not_array.message().find("an array of AOV layer names"), std::string::npos) << not_array.message();
-    // The adaptive sampler's layers are not there yet: refused by name, not ignored.
-    SceneError variance = load_error(R"({"film": {"aovs": ["variance"]}})");
-    EXPECT_EQ(variance.where().json_pointer, "/film/aovs/0");
-    EXPECT_NE(variance.message().find("not available yet"), std::string::npos) << variance.message();
-    EXPECT_NE(load_error(R"({"film": {"aovs": ["spp"]}})").message().find("not available yet"), std::string::npos);
+    // The layers derived from the film's statistics load like the others.
+    const AovLayers derived = load_json(R"({"film": {"aovs": ["variance", "spp"]}})").film.aovs;
+    EXPECT_TRUE(derived.has(AovLayer::kVariance));
+    EXPECT_TRUE(derived.has(AovLayer::kSpp));
+    EXPECT_EQ(derived.value_count(), 0);
 }
 
 }  // namespace

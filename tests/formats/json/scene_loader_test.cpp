@@ -123,6 +123,22 @@ TEST(SceneLoaderSampler, SeedIsReadAsUnsigned64Bit) {
     EXPECT_EQ(load_error(R"({"sampler": {"seed": 1.5}})").where().json_pointer, "/sampler/seed");
 }
 
+TEST(SceneLoaderSampler, AdaptiveIsReadWithDefaults) {
+    EXPECT_FALSE(load_json(R"({"sampler": {}})").sampler.adaptive.has_value());
+    EXPECT_EQ(load_json(R"({"sampler": {"adaptive": {}}})").sampler.adaptive, AdaptiveSettings({0.01f, 16}));
+    EXPECT_EQ(load_json(R"({"sampler": {"adaptive": {"threshold": 0.05, "min_spp": 4}}})").sampler.adaptive,
+              AdaptiveSettings({0.05f, 4}));
+    EXPECT_EQ(load_error(R"({"sampler": {"adaptive": {"threshold": 0}}})").message(),
+              "expected a number in (0, 1), got 0");
+    EXPECT_EQ(load_error(R"({"sampler": {"adaptive": {"threshold": 1}}})").where().json_pointer,
+              "/sampler/adaptive/threshold");
+    EXPECT_EQ(load_error(R"({"sampler": {"adaptive": {"min_spp": 1}}})").message(),
+              "expected an integer in [2, 16777216], got 1");
+    EXPECT_EQ(load_error(R"({"sampler": {"adaptive": {"treshold": 0.1}}})").where().json_pointer,
+              "/sampler/adaptive");
+    EXPECT_EQ(load_error(R"({"sampler": {"adaptive": 0.01}})").where().json_pointer, "/sampler/adaptive");
+}
+
 // ---- camera
 
 TEST(SceneLoaderCamera, PositionLookAtAndUpAreRead) {

@@ -90,9 +90,6 @@ AovLayers read_aov_layers(const JsonCursor& aovs) {
         const AovLayer layer = *parse_aov_layer(e.choice("AOV layer", names));
         const std::string_view name = aov_layer_info(layer).name;
         if (layers.has(layer)) e.fail(fmt::format("AOV layer \"{}\" is listed twice", name));
-        if (!aov_layer_available(layer))
-            e.fail(fmt::format("AOV layer \"{}\" is not available yet: it needs adaptive sampling's per-pixel "
-                               "statistics (issue 17)", name));
         layers.add(layer);
     }
     return layers;

@@ -54,6 +54,16 @@ void read_sampler(JsonCursor c, SamplerSettings& sampler) {
     if (auto v = c.get("type")) sampler.type = *parse_sampler_type(v->choice("sampler type", sampler_type_names()));
     if (auto v = c.get("spp")) sampler.spp = v->integer(Bounds::closed(1, kMaxSpp));
     if (auto v = c.get("seed")) sampler.seed = v->unsigned_integer();
+    if (auto a = c.get("adaptive")) {
+        a->expect_object();
+        AdaptiveSettings adaptive;
+        // A threshold of 1 or more would stop every block at its first decision.
+        if (auto v = a->get("threshold")) adaptive.threshold = v->number_f(Bounds{0.0, 1.0, true, true});
+        // Two samples are the fewest a sample variance needs.
+        if (auto v = a->get("min_spp")) adaptive.min_spp = v->integer(Bounds::closed(2, kMaxSpp));
+        a->reject_unknown_keys();
+        sampler.adaptive = adaptive;
+    }
     c.reject_unknown_keys();
 }
 
@@ -363,6 +373,10 @@ Scene load_scene_from_string(std::string_view json, const std::filesystem::path&
     std::optional<JsonCursor> camera = root.get("camera");
     if (camera) read_camera(*camera, scene.camera, budget);
     if (budget.used() == 0) check_film_memory(scene.camera, camera ? *camera : root, budget);
+    if (scene.sampler.adaptive)
+        if (auto refused = budget.charge(film_statistics_memory_bytes(scene.camera.width, scene.camera.height),
+                                         "the adaptive sampler's per-pixel statistics"))
+            root.get("sampler")->get("adaptive")->fail(*refused);
     if (auto c = root.get("film")) read_film(*c, scene.film, scene.camera, scene.output_file);
     if (auto c = root.get("textures")) read_textures(*c, scene);
     if (auto c = root.get("materials")) read_materials(*c, scene);

@@ -1,0 +1,42 @@
+#include "candela/render/adaptive_sampling.h"
+
+#include <cmath>
+
+#include "candela/film/film.h"
+#include "candela/film/pixel_statistics.h"
+
+namespace candela {
+
+std::vector<PixelBounds> tile_blocks(const Tile& tile) {
+    std::vector<PixelBounds> blocks;
+    constexpr int b = kAdaptiveBlockSize;
+    for (int y = tile.y0 / b * b; y < tile.y1; y += b)
+        for (int x = tile.x0 / b * b; x < tile.x1; x += b)
+            blocks.push_back({std::max(x, tile.x0), std::max(y, tile.y0), std::min(x + b, tile.x1),
+                              std::min(y + b, tile.y1)});
+    return blocks;
+}
+
+bool block_active(const Film& film, const PixelBounds& block, uint32_t begin, const AdaptiveSettings& settings) {
+    // Every pixel of a block has the same count: the block's decisions are its pixels'.
+    if (film.count(block.x0, block.y0) != double(begin)) return false;
+    const auto min_spp = uint32_t(settings.min_spp);
+    if (begin < min_spp || !is_decision_point(begin, min_spp)) return true;
+    // Relative error below the threshold: relative variance below its square.
+    const double limit = double(settings.threshold) * double(settings.threshold);
+    for (int y = block.y0; y < block.y1; ++y)
+        for (int x = block.x0; x < block.x1; ++x)
+            if (!(relative_variance(film, x, y) < limit)) return true;
+    return false;
+}
+
+uint64_t active_pixels(const Film& film, const std::vector<Tile>& tiles, uint32_t begin,
+                       const AdaptiveSettings& settings) {
+    uint64_t active = 0;
+    for (const Tile& tile : tiles)
+        for (const PixelBounds& block : tile_blocks(tile))
+            if (block_active(film, block, begin, settings)) active += uint64_t(block.width()) * uint64_t(block.height());
+    return active;
+}
+
+}  // namespace candela
