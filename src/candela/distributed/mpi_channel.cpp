@@ -15,15 +15,25 @@ void MpiChannel::send(int rank, int tag, std::vector<unsigned char> bytes) {
 }
 
 std::optional<ReceivedMessage> MpiChannel::try_receive(int tag) {
-    int flag = 0;
-    MPI_Status status;
-    MPI_Iprobe(MPI_ANY_SOURCE, tag, MPI_COMM_WORLD, &flag, &status);
-    if (!flag) return std::nullopt;
-    int count = 0;
-    MPI_Get_count(&status, MPI_BYTE, &count);
-    ReceivedMessage m{status.MPI_SOURCE, std::vector<unsigned char>(size_t(count))};
-    bytes_received_ += size_t(count);
-    MPI_Recv(m.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    while (true) {  // match (and start receiving) everything that has arrived
+        int flag = 0;
+        MPI_Message message;
+        MPI_Status status;
+        MPI_Improbe(MPI_ANY_SOURCE, tag, MPI_COMM_WORLD, &flag, &message, &status);
+        if (!flag) break;
+        int count = 0;
+        MPI_Get_count(&status, MPI_BYTE, &count);
+        Incoming& in = incoming_.emplace_back(Incoming{MPI_REQUEST_NULL, status.MPI_SOURCE, {}});
+        in.bytes.resize(size_t(count));
+        MPI_Imrecv(in.bytes.data(), count, MPI_BYTE, &message, &in.request);
+    }
+    if (incoming_.empty()) return std::nullopt;
+    int done = 0;
+    MPI_Test(&incoming_.front().request, &done, MPI_STATUS_IGNORE);
+    if (!done) return std::nullopt;
+    ReceivedMessage m{incoming_.front().source, std::move(incoming_.front().bytes)};
+    incoming_.pop_front();
+    bytes_received_ += m.bytes.size();
     return m;
 }
 
@@ -38,6 +48,8 @@ void MpiChannel::progress() {
 void MpiChannel::wait_all() {
     for (Pending& p : pending_) MPI_Wait(&p.request, MPI_STATUS_IGNORE);
     pending_.clear();
+    for (Incoming& in : incoming_) MPI_Wait(&in.request, MPI_STATUS_IGNORE);
+    incoming_.clear();
 }
 
 }  // namespace candela

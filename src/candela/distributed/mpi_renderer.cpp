@@ -3,6 +3,7 @@
 #include <sched.h>
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <condition_variable>
 #include <deque>
@@ -31,9 +32,18 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// How long the communicating thread sleeps when there is nothing to do: short against a tile's
-// milliseconds of work, long against the cost of polling MPI.
-constexpr auto kPollInterval = std::chrono::microseconds(500);
+// How long a communicating thread sleeps between looks at MPI when nothing wakes it. Each look
+// costs ~15 us of a core that a render thread would use (a context switch and MPI's progress
+// engine; polling every 0.2 ms cost 6% of the render on 2 cores), so they are rare, and latency
+// is hidden instead by each rank asking for work well before it runs out (kQueuedSeconds).
+// rank 0 looks every millisecond (a request waits at most that long); another rank every 2 ms
+// while its threads have work, and every 0.1 ms while they wait for some.
+constexpr auto kRootPollInterval = std::chrono::microseconds(1000);
+constexpr auto kBusyPollInterval = std::chrono::microseconds(2000);
+constexpr auto kStarvedPollInterval = std::chrono::microseconds(100);
+// The work a rank keeps queued beyond one tile per thread, in seconds: several round trips of
+// requests, short against a pass (the queue's tail is what a pass's end may wait for).
+constexpr double kQueuedSeconds = 0.008;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -122,7 +132,7 @@ class RootRender {
             lock.lock();
             pass_dropped_ += tally.dropped - dropped_before;
             scheduler_.done(tile_index, 0);
-            main_.notify_one();
+            if (scheduler_.pass_complete()) main_.notify_one();  // else the poll will do: wakes cost
         }
     }
 
@@ -142,7 +152,7 @@ class RootRender {
                 if (!start_pass()) return;
             }
             channel_.progress();
-            main_.wait_for(lock, kPollInterval);
+            main_.wait_for(lock, kRootPollInterval);
         }
     }
 
@@ -272,7 +282,7 @@ class RootRender {
             std::optional<ReceivedMessage> m = channel_.try_receive(kTagToRoot);
             if (!m) {
                 channel_.progress();
-                std::this_thread::sleep_for(kPollInterval);
+                std::this_thread::sleep_for(kRootPollInterval);
                 continue;
             }
             MessageReader r(m->bytes);
@@ -328,11 +338,11 @@ class WorkerRender {
     WorkerRender(const MpiSession& session, const FrameRenderer& frame, const MpiRenderOptions& options)
         : session_(session), frame_(frame), options_(options),
           tiles_(render_tiles(frame.width(), frame.height(), options.render)),
-          film_(frame.width(), frame.height(), frame.weighted(), frame.aovs()) {}
+          film_(frame.width(), frame.height(), frame.weighted(), frame.aovs()),
+          threads_(threads_for(session, options.render)) {}
 
     MpiRenderResult run() {
-        const int threads = threads_for(session_, options_.render);
-        const int depth = 2 * threads;  // tiles queued or in work: enough to hide a request's latency
+        const int threads = threads_;
         std::vector<TileTally> tallies(static_cast<size_t>(threads));
         std::vector<std::thread> workers;
         for (int i = 0; i < threads; ++i) workers.emplace_back([this, &tally = tallies[size_t(i)]] { render(tally); });
@@ -352,10 +362,11 @@ class WorkerRender {
                 channel_.send(0, kTagToRoot, std::move(w.bytes()));
                 stop_reported = true;
             }
-            int in_work = 0;
+            int in_work = 0, depth = 0;
             {
                 std::lock_guard lock(mutex_);
                 in_work = int(queue_.size()) + running_;
+                depth = queue_depth(threads);
             }
             if (!request_outstanding && !stop_reported && in_work < depth) {
                 MessageWriter w(TileMessageType::kRequest);
@@ -365,7 +376,7 @@ class WorkerRender {
             }
             channel_.progress();
             std::unique_lock lock(mutex_);
-            main_.wait_for(lock, kPollInterval);
+            main_.wait_for(lock, queue_.empty() ? kStarvedPollInterval : kBusyPollInterval);
         }
         {
             std::lock_guard lock(mutex_);
@@ -413,16 +424,34 @@ class WorkerRender {
             ++running_;
             lock.unlock();
             const TileTally before = tally;
-            frame_.render_tile(tiles_[size_t(job.tile)], job.begin, job.end, film_, film_, tally);
+            const Tile& tile = tiles_[size_t(job.tile)];
+            const Clock::time_point start = Clock::now();
+            frame_.render_tile(tile, job.begin, job.end, film_, film_, tally);
+            const double per_sample = seconds_since(start) / (double(tile.pixels()) * double(job.end - job.begin));
             RayCounters rays = tally.rays;
             rays.camera -= before.rays.camera;
             rays.bounce -= before.rays.bounce;
             rays.shadow -= before.rays.shadow;
             lock.lock();
             --running_;
+            seconds_per_sample_ = seconds_per_sample_ > 0 ? 0.75 * seconds_per_sample_ + 0.25 * per_sample : per_sample;
+            pass_spp_ = job.end - job.begin;
             done_.push_back({job, tally.dropped - before.dropped, rays});
-            main_.notify_one();
+            // Woken early only when the queue runs low (to ask for more, and to send the results
+            // at a pass's end); the other results go at the next poll.
+            if (2 * (int(queue_.size()) + running_) <= queue_depth(threads_)) main_.notify_one();
         }
+    }
+
+    // How many tiles to keep queued or in work (mutex_ held): one per thread, and kQueuedSeconds
+    // more at the rate the last tiles took (2 per thread before there is a rate), so that a
+    // request's answer arrives before the threads run out, whatever a tile costs.
+    int queue_depth(int threads) const {
+        if (seconds_per_sample_ <= 0) return 2 * threads + 1;
+        const double tile_seconds =
+            seconds_per_sample_ * double(kTypicalTilePixels) * double(std::max<uint32_t>(pass_spp_, 1));
+        const double more = std::ceil(kQueuedSeconds * double(threads) / tile_seconds);
+        return threads + int(std::clamp(more, 1.0, 64.0 * double(threads)));
     }
 
     // An assignment: queues its tiles (after writing the start values sent with them). The end:
@@ -493,6 +522,10 @@ class WorkerRender {
     std::vector<Done> done_;
     int running_ = 0;
     bool shutdown_ = false;
+    const int threads_;
+    double seconds_per_sample_ = 0;  // of a pixel sample, smoothed over the last tiles
+    uint32_t pass_spp_ = 0;          // samples per pixel of the last tile's pass
+    static constexpr int kTypicalTilePixels = 256;
 };
 
 }  // namespace
