@@ -8,13 +8,17 @@
 # render), the passes and the bytes rank 0 received and sent per pixel and pass.
 #
 #   bench/mpi_scaling.sh [--runs N] [--spp "64 256"] [--record] [--build-dir DIR] [--no-build]
+#                        [-- EXTRA MPIRUN FLAGS]
+#
+# Flags after -- go to mpirun (e.g. -- --mca pml ob1: on a machine without a fast network, Open
+# MPI's default UCX layer alone takes ~0.2 s of MPI_Init).
 #
 # Needs Open MPI (scripts/setup.sh installs it); timings need a quiet machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source bench/lib.sh
 
-runs=5 spps="64 256" record=0 build=1 build_dir=build
+runs=5 spps="64 256" record=0 build=1 build_dir=build mpirun_flags=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --runs) runs="$2"; shift 2 ;;
@@ -22,6 +26,7 @@ while [ $# -gt 0 ]; do
     --record) record=1; shift ;;
     --build-dir) build_dir="$2"; shift 2 ;;
     --no-build) build=0; shift ;;
+    --) shift; mpirun_flags=("$@"); break ;;
     *) echo "usage: bench/mpi_scaling.sh [--runs N] [--spp \"64 256\"] [--record] [--build-dir DIR] [--no-build]" >&2; exit 2 ;;
   esac
 done
@@ -44,7 +49,7 @@ run_once() {
   if [ "$setting" = "alone" ]; then
     "$build_dir/candela" render "$scene" --spp "$spp" --threads "$cores" -o "$out/img.exr" --stats "$st" 2>>"$out/log"
   else
-    mpirun --oversubscribe -np "$n" "$build_dir/candela" render "$scene" --spp "$spp" --threads "$t" \
+    mpirun "${mpirun_flags[@]}" --oversubscribe -np "$n" "$build_dir/candela" render "$scene" --spp "$spp" --threads "$t" \
       -o "$out/img.exr" --stats "$st" 2>>"$out/log"
   fi
   end=$(now)
@@ -56,7 +61,7 @@ settings=("alone" "2x1" "3x1" "4x1")
 [ "$cores" -ge 4 ] && settings+=("$((cores / 2))x2")
 table="$out/table.md"
 {
-  echo "MPI against one process, Cornell box 512x512 ($(commit_id), $(cpu_model), $cores cores, medians of $runs alternating runs):"
+  echo "MPI against one process, Cornell box 512x512 ($(commit_id), $(cpu_model), $cores cores, medians of $runs alternating runs${mpirun_flags[*]:+, mpirun ${mpirun_flags[*]}}):"
   echo
   echo "| spp | ranks x threads | wall s | render s | efficiency (render) | efficiency (wall) | startup s | passes | to rank 0 B/px/pass | from rank 0 B/px/pass |"
   echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"

@@ -59,7 +59,7 @@ void apply_adaptive_options(const AdaptiveArgs& args, RenderOptions& options) {
 void check_adaptive_alone(const Scene& scene, const RenderOptions& options) {
     if (needs_statistics(scene, options))
         bad_flag("adaptive sampling (sampler.adaptive, --noise-threshold), --target-error and the variance and spp "
-                 "AOV layers do not run under MPI or --shard yet; render them in one process");
+                 "AOV layers do not run with --shard yet; render them in one process or under mpirun");
 }
 
 void check_resumed_statistics(const std::string& checkpoint, const Film& film, const Scene& scene,

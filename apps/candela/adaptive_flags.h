@@ -30,9 +30,8 @@ void apply_adaptive_overrides(const AdaptiveArgs& args, Scene& scene);
 // The flags' render options (the target error).
 void apply_adaptive_options(const AdaptiveArgs& args, RenderOptions& options);
 
-// Refuses adaptive sampling, --target-error and the variance and spp layers under MPI and --shard: the MPI renderer does not
-// yet cut its passes at decision points nor reduce the stopping rules (render/adaptive_sampling.h),
-// and part files (render/shard_part.h) do not carry the film's statistics.
+// Refuses adaptive sampling, --target-error and the variance and spp layers with --shard: part
+// files (render/shard_part.h) do not carry the film's statistics yet.
 void check_adaptive_alone(const Scene& scene, const RenderOptions& options);
 
 // Refuses (SceneError naming `checkpoint`) a resumed film without the statistics the render needs.

@@ -318,7 +318,7 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
 #endif
     RenderOptions options;
     apply_adaptive_options(a.adaptive, options);
-    if (mpi || shard) check_adaptive_alone(scene, options);
+    if (shard) check_adaptive_alone(scene, options);
     RenderState start{make_film(scene, needs_statistics(scene, options))};
     // A shard's checkpoints are its part files.
     auto save = [&, part = shard ? part_info(scene, *shard) : PartInfo{}](const RenderState& state) {

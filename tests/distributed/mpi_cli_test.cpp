@@ -184,6 +184,26 @@ TEST(MpiRender, GivesTheAovLayersOfOneProcess) {
     }
 }
 
+TEST(MpiRender, AdaptiveSamplingAndATargetErrorGiveTheBitsOfOneProcess) {
+    const fs::path dir = temp_dir("adaptive");
+    // Blocks stop at the decision points: the MPI renderer cuts its passes there and decides from
+    // the same sums. The variance and spp layers show where the samples went.
+    const Args adaptive = {"--noise-threshold", "0.05", "--min-spp", "8", "--aov", "variance,spp"};
+    ASSERT_EQ(run_alone(render_args(dir, "one", "48", 2, adaptive), dir / "one.log").exit_code, 0);
+    const CliRun r = run_mpi(3, render_args(dir, "three", "48", 1, adaptive), dir / "three.log");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    expect_same_images(dir, "three", "one");
+    EXPECT_NE(r.output.find("spp mean"), std::string::npos) << r.output;
+
+    const Args target = {"--target-error", "0.02"};
+    const CliRun alone = run_alone(render_args(dir, "t_one", "4096", 2, target), dir / "t_one.log");
+    ASSERT_EQ(alone.exit_code, 0) << alone.output;
+    const CliRun ranks = run_mpi(2, render_args(dir, "t_two", "4096", 1, target), dir / "t_two.log");
+    ASSERT_EQ(ranks.exit_code, 0) << ranks.output;
+    expect_same_images(dir, "t_two", "t_one");
+    EXPECT_NE(ranks.output.find("(converged)"), std::string::npos) << ranks.output;
+}
+
 TEST(MpiRender, AStopUnderMpiResumesInOneProcessAndTheOtherWayRound) {
     const fs::path dir = temp_dir("resume");
     // Stopped by the time limit on 3 ranks, resumed alone.

@@ -1,5 +1,6 @@
 #include "candela/distributed/mpi_renderer.h"
 
+#include <fmt/format.h>
 #include <sched.h>
 
 #include <algorithm>
@@ -22,6 +23,8 @@
 #include "candela/film/film.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/render/frame_renderer.h"
+#include "candela/film/pixel_statistics.h"
+#include "candela/render/adaptive_sampling.h"
 #include "candela/render/pass_schedule.h"
 #include "candela/render/progress.h"
 #include "candela/scene/scene.h"
@@ -61,12 +64,18 @@ class RootRender {
     RootRender(const MpiSession& session, const FrameRenderer& frame, const Scene& scene,
                const MpiRenderOptions& options, RenderState start)
         : session_(session), frame_(frame), options_(options), spp_(uint32_t(scene.sampler.spp)),
-          tiles_(render_tiles(frame.width(), frame.height(), options.render)),
+          adaptive_(scene.sampler.adaptive),
+          first_decision_(adaptive_ ? uint32_t(adaptive_->min_spp) : kFirstTargetCheck),
+          tiles_(render_tiles(frame.width(), frame.height(), options.render, adaptive_.has_value())),
           scheduler_(int(tiles_.size()), session.size(), start.samples_done == 0) {
         state_ = std::move(start);
         start_samples_ = state_.samples_done;
         start_dropped_ = state_.dropped_samples;
-        for (const Tile& tile : tiles_) pixels_ += uint64_t(tile.pixels());
+        for (const Tile& tile : tiles_) {
+            pixels_ += uint64_t(tile.pixels());
+            regions_.push_back(tile.bounds());
+        }
+        if (state_.film.has_statistics()) samples_before_ = spp_summary(state_.film, regions_).total;
     }
 
     MpiRenderResult run() {
@@ -99,7 +108,11 @@ class RootRender {
         r.stats.rays = rays_;
         r.stats.threads = threads;
         r.stats.passes = passes_;
-        r.stats.samples = pixels_ * (state_.samples_done - start_samples_);
+        r.stats.samples = state_.film.has_statistics()
+                              ? uint64_t(spp_summary(state_.film, regions_).total - samples_before_)
+                              : pixels_ * (state_.samples_done - start_samples_);
+        r.stats.relmse_estimate = relmse_estimate_;
+        r.stats.converged = converged_;
         r.stats.dropped_samples = state_.dropped_samples - start_dropped_;
         r.image = state_.film.resolve(state_.samples_done);
         r.aov_layers = state_.film.resolve_aovs(state_.samples_done);
@@ -168,18 +181,23 @@ class RootRender {
     // Starts the next pass (mutex_ held); false when there is none: all samples are done, or not
     // one more sample per pixel fits before the deadline.
     bool start_pass() {
-        if (state_.samples_done >= spp_) return false;
+        if (state_.samples_done >= spp_ || converged()) return false;
         std::optional<double> seconds_left;
         if (options_.render.deadline)
             seconds_left = std::chrono::duration<double>(*options_.render.deadline - Clock::now()).count();
-        const uint32_t n = next_pass_spp(previous_, spp_ - state_.samples_done, options_.render.pass_seconds,
-                                         seconds_left, options_.render.pass_spp);
+        // Passes end at the decision points of adaptive sampling and of a target error, as in
+        // render(): the decisions are made from the state there, so they are the same.
+        uint32_t remaining = spp_ - state_.samples_done;
+        if (adaptive_ || options_.render.target_error > 0.0)
+            remaining = std::min(remaining, next_decision_point(state_.samples_done, first_decision_) - state_.samples_done);
+        const uint32_t n = next_pass_spp(previous_, remaining, options_.render.pass_seconds, seconds_left,
+                                         options_.render.pass_spp);
         if (n == 0) {
             end_ = RenderEnd::kDeadline;
             return false;
         }
         if (next_.width() != frame_.width() || next_.height() != frame_.height())
-            next_ = Film(frame_.width(), frame_.height(), frame_.weighted(), frame_.aovs());
+            next_ = Film(frame_.width(), frame_.height(), frame_.weighted(), frame_.aovs(), state_.film.has_statistics());
         pass_begin_ = state_.samples_done;
         pass_end_ = state_.samples_done + n;
         ++pass_id_;
@@ -192,6 +210,21 @@ class RootRender {
         waiting.swap(waiting_requests_);
         for (auto [rank, want] : waiting) assign(rank, want);
         return true;
+    }
+
+    // At a pass boundary, for a film with statistics (mutex_ held): whether the render is done
+    // because every pixel stopped (adaptive sampling) or the estimated relMSE met the target, as
+    // render() decides it; also the estimate, for the progress bar and the summary.
+    bool converged() {
+        if (!state_.film.has_statistics() || state_.samples_done == 0) return false;
+        relmse_estimate_ = estimated_relmse(state_.film, regions_);
+        progress_->set_note(fmt::format("relMSE ~{:.3g}", *relmse_estimate_));
+        if (!is_decision_point(state_.samples_done, first_decision_)) return false;
+        if (options_.render.target_error > 0.0 && *relmse_estimate_ <= options_.render.target_error)
+            converged_ = true;
+        else if (adaptive_ && active_pixels(state_.film, tiles_, state_.samples_done, *adaptive_) == 0)
+            converged_ = true;
+        return converged_;
     }
 
     // Every tile of the pass is home (mutex_ held): `next_` is the new state.
@@ -298,8 +331,14 @@ class RootRender {
     const FrameRenderer& frame_;
     const MpiRenderOptions& options_;
     const uint32_t spp_;
+    const std::optional<AdaptiveSettings> adaptive_;
+    const uint32_t first_decision_;  // adaptive sampling's or a target's first decision point
     const std::vector<Tile> tiles_;
-    uint64_t pixels_ = 0;  // that the tiles cover
+    uint64_t pixels_ = 0;                // that the tiles cover
+    std::vector<PixelBounds> regions_;   // the tiles', for the film's reductions
+    double samples_before_ = 0;          // films with statistics: the samples the start state had
+    std::optional<double> relmse_estimate_;
+    bool converged_ = false;
     MpiChannel channel_;
     ProgressBar* progress_ = nullptr;
 
@@ -335,10 +374,11 @@ class RootRender {
 // sends each result home.
 class WorkerRender {
   public:
-    WorkerRender(const MpiSession& session, const FrameRenderer& frame, const MpiRenderOptions& options)
+    WorkerRender(const MpiSession& session, const FrameRenderer& frame, const Scene& scene,
+                 const MpiRenderOptions& options)
         : session_(session), frame_(frame), options_(options),
-          tiles_(render_tiles(frame.width(), frame.height(), options.render)),
-          film_(frame.width(), frame.height(), frame.weighted(), frame.aovs()),
+          tiles_(render_tiles(frame.width(), frame.height(), options.render, scene.sampler.adaptive.has_value())),
+          film_(frame.width(), frame.height(), frame.weighted(), frame.aovs(), needs_statistics(scene, options.render)),
           threads_(threads_for(session, options.render)) {}
 
     MpiRenderResult run() {
