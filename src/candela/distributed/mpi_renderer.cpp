@@ -181,7 +181,8 @@ class RootRender {
     // Starts the next pass (mutex_ held); false when there is none: all samples are done, or not
     // one more sample per pixel fits before the deadline.
     bool start_pass() {
-        if (state_.samples_done >= spp_ || converged()) return false;
+        const bool converged_now = converged();  // also the estimate after the last pass
+        if (state_.samples_done >= spp_ || converged_now) return false;
         std::optional<double> seconds_left;
         if (options_.render.deadline)
             seconds_left = std::chrono::duration<double>(*options_.render.deadline - Clock::now()).count();
@@ -581,9 +582,10 @@ int default_threads_per_rank(int ranks_on_host) {
 MpiRenderResult render_mpi(const MpiSession& session, const Scene& scene, const MpiRenderOptions& options,
                            RenderState start) {
     const FrameRenderer frame(scene);
-    if (session.rank() != 0) return WorkerRender(session, frame, options).run();
+    if (session.rank() != 0) return WorkerRender(session, frame, scene, options).run();
     if (start.film.width() != frame.width() || start.film.height() != frame.height() ||
-        start.film.weighted() != frame.weighted() || !(start.film.aovs() == frame.aovs()))
+        start.film.weighted() != frame.weighted() || !(start.film.aovs() == frame.aovs()) ||
+        start.film.has_statistics() != needs_statistics(scene, options.render))
         throw RenderError("render: the start state does not fit the scene's film");
     return RootRender(session, frame, scene, options, std::move(start)).run();
 }
