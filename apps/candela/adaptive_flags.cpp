@@ -7,6 +7,7 @@
 #include "candela/core/error.h"
 #include "candela/film/pixel_statistics.h"
 #include "candela/render/renderer.h"
+#include "candela/render/shard.h"
 #include "candela/scene/scene.h"
 
 namespace candela::cli {
@@ -56,10 +57,11 @@ void apply_adaptive_options(const AdaptiveArgs& args, RenderOptions& options) {
     options.target_error = e;
 }
 
-void check_adaptive_alone(const Scene& scene, const RenderOptions& options) {
-    if (needs_statistics(scene, options))
-        bad_flag("adaptive sampling (sampler.adaptive, --noise-threshold), --target-error and the variance and spp "
-                 "AOV layers do not run with --shard yet; render them in one process or under mpirun");
+void check_target_error_alone(const RenderOptions& options) {
+    if (options.target_error > 0.0)
+        bad_flag("--target-error does not run with --shard: each part would stop on its own pixels' estimate, and "
+                 "the merged image would not meet the target; use --noise-threshold (adaptive sampling, which shards "
+                 "and merges bit for bit), or render --target-error in one process or under mpirun");
 }
 
 void check_resumed_statistics(const std::string& checkpoint, const Film& film, const Scene& scene,
@@ -70,12 +72,15 @@ void check_resumed_statistics(const std::string& checkpoint, const Film& film, c
                          "adaptive sampling or --target-error), which --target-error needs; render again");
 }
 
-std::string adaptive_summary(const RenderResult& result) {
+std::string adaptive_summary(const RenderResult& result, Shard shard) {
     const Film& film = result.state.film;
     if (!film.has_statistics()) return "";
-    const SppSummary spp = spp_summary(film);
+    std::vector<PixelBounds> regions;  // a shard's pixels; empty: the whole film
+    if (shard.count > 1)
+        for (const Tile& tile : shard_tiles(film.width(), film.height(), shard)) regions.push_back(tile.bounds());
+    const SppSummary spp = spp_summary(film, regions);
     return fmt::format(", relMSE ~{:.3g}{}, spp mean {:.1f} min {:g} max {:g}",
-                       result.stats.relmse_estimate.value_or(estimated_relmse(film)),
+                       result.stats.relmse_estimate.value_or(estimated_relmse(film, regions)),
                        result.stats.converged ? " (converged)" : "", spp.mean, spp.min, spp.max);
 }
 

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "candela/render/shard.h"
+
 namespace candela {
 struct Scene;
 struct RenderOptions;
@@ -30,15 +32,17 @@ void apply_adaptive_overrides(const AdaptiveArgs& args, Scene& scene);
 // The flags' render options (the target error).
 void apply_adaptive_options(const AdaptiveArgs& args, RenderOptions& options);
 
-// Refuses adaptive sampling, --target-error and the variance and spp layers with --shard: part
-// files (render/shard_part.h) do not carry the film's statistics yet.
-void check_adaptive_alone(const Scene& scene, const RenderOptions& options);
+// Refuses --target-error with --shard: a whole-image target is not met by parts that each stop on
+// their own pixels' estimate (docs/CLUSTER.md). Adaptive sampling and the variance and spp layers
+// do run with --shard: part files carry the film's statistics (render/shard_part.h).
+void check_target_error_alone(const RenderOptions& options);
 
 // Refuses (SceneError naming `checkpoint`) a resumed film without the statistics the render needs.
 void check_resumed_statistics(const std::string& checkpoint, const Film& film, const Scene& scene,
                               const RenderOptions& options);
 
-// For the summary line: ", relMSE ~E, spp mean/min/max" for films with statistics, else "".
-std::string adaptive_summary(const RenderResult& result);
+// For the summary line: ", relMSE ~E, spp mean/min/max" for films with statistics (over the
+// shard's pixels for a part), else "".
+std::string adaptive_summary(const RenderResult& result, Shard shard = {});
 
 }  // namespace candela::cli

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "candela/core/error.h"
+#include "candela/film/pixel_statistics.h"
 #include "candela/image/image_io.h"
 #include "candela/image/image_layers.h"
 #include "candela/render/shard_merge.h"
@@ -42,10 +43,16 @@ int run_merge(const MergeArgs& a) {
     std::string outs;
     for (const std::string& out : a.outputs) outs += (outs.empty() ? "" : ", ") + out;
     const uint64_t dropped = state.dropped_samples;
-    fmt::print(stderr, "candela: merged {} part{} of a {}x{} render, {} spp, {} integrator, {} sampler, seed {}{}; wrote {}\n",
+    std::string statistics;  // as the render's summary line says it (adaptive_summary)
+    if (state.film.has_statistics()) {
+        const SppSummary spp = spp_summary(state.film);
+        statistics = fmt::format(", relMSE ~{:.3g}, spp mean {:.1f} min {:g} max {:g}", estimated_relmse(state.film),
+                                 spp.mean, spp.min, spp.max);
+    }
+    fmt::print(stderr, "candela: merged {} part{} of a {}x{} render, {} spp, {} integrator, {} sampler, seed {}{}{}; wrote {}\n",
                merged.parts, merged.parts == 1 ? "" : "s", image.width, image.height, state.samples_done,
                merged.identity.integrator, merged.identity.sampler, merged.identity.seed,
-               dropped ? fmt::format(", {} NaN/Inf samples dropped", dropped) : "", outs);
+               dropped ? fmt::format(", {} NaN/Inf samples dropped", dropped) : "", statistics, outs);
     return 0;
 }
 

@@ -318,7 +318,7 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
 #endif
     RenderOptions options;
     apply_adaptive_options(a.adaptive, options);
-    if (shard) check_adaptive_alone(scene, options);
+    if (shard) check_target_error_alone(options);
     RenderState start{make_film(scene, needs_statistics(scene, options))};
     // A shard's checkpoints are its part files.
     auto save = [&, part = shard ? part_info(scene, *shard) : PartInfo{}](const RenderState& state) {
@@ -425,7 +425,7 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
                result.image.width, result.image.height, spp, integrator_type_name(scene.integrator.type), format_duration(s.render_seconds),
                format_duration(s.build_seconds), format_count(double(s.rays.total())),
                format_count(s.render_seconds > 0 ? double(s.rays.total()) / s.render_seconds : 0.0), threads,
-               dropped ? fmt::format(", {} NaN/Inf samples dropped", dropped) : "", adaptive_summary(result),
+               dropped ? fmt::format(", {} NaN/Inf samples dropped", dropped) : "", adaptive_summary(result, options.shard),
                stopped.empty() ? "" : stopped + "; ", outs);
     return exit_code;
 }

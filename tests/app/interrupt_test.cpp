@@ -173,22 +173,27 @@ TEST(Interrupt, SecondSignalQuitsAtOnceLeavingTheLastCheckpoint) {
     expect_resume_is_bit_identical(dir, r.checkpoint(), done + 2);
 }
 
-// A shard of the Cornell box (part 2 of 3 of a 40x24 film) to `part`, with `more` flags.
-Args shard(const fs::path& part, const std::string& spp, int threads, const Args& more = {}) {
+// A shard of the Cornell box (part `which`, 2 of 3 unless said, of a 40x24 film) to `part`, with
+// `more` flags.
+Args shard(const fs::path& part, const std::string& spp, int threads, const Args& more = {},
+           const std::string& which = "2/3") {
     Args args = {"render", kCornell, "--resolution", "40x24", "--spp", spp, "--threads", std::to_string(threads),
-                 "--shard", "2/3", "-o", part.string()};
+                 "--shard", which, "-o", part.string()};
     args.insert(args.end(), more.begin(), more.end());
     return args;
 }
 
 // Resumes the stopped part to `spp` with one thread and compares its file with that of the part
 // rendered at once on three: byte for byte.
-void expect_part_resume_is_bit_identical(const fs::path& dir, const fs::path& part, uint32_t spp) {
+void expect_part_resume_is_bit_identical(const fs::path& dir, const fs::path& part, uint32_t spp,
+                                         const Args& more = {}, const std::string& which = "2/3") {
     const std::string s = std::to_string(spp);
-    CliRun resumed = run(shard(part, s, 1, {"--resume", part.string()}), dir / "resumed.log");
+    Args resume = more;
+    resume.insert(resume.end(), {"--resume", part.string()});
+    CliRun resumed = run(shard(part, s, 1, resume, which), dir / "resumed.log");
     ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
     EXPECT_NE(resumed.output.find("resuming from " + part.string()), std::string::npos) << resumed.output;
-    CliRun reference = run(shard(dir / "reference.ckpt", s, 3), dir / "reference.log");
+    CliRun reference = run(shard(dir / "reference.ckpt", s, 3, more, which), dir / "reference.log");
     ASSERT_EQ(reference.exit_code, 0) << reference.output;
     const std::string a = read_bytes(part);
     EXPECT_FALSE(a.empty());
@@ -229,6 +234,24 @@ TEST(Interrupt, ShardStoppedBySigintAfterPeriodicPartFilesResumesToTheUninterrup
     const uint32_t done = samples_done(out);
     ASSERT_GT(done, 0u) << out;
     expect_part_resume_is_bit_identical(dir, part, done + 2);
+}
+
+// An adaptive part (its statistics and settings in the part file) stopped at the time limit goes
+// on, past at least one more decision point, to exactly the uninterrupted part. Part 1 of 3: it
+// has blocks that stop at min_spp (black) and blocks that go on (part 2 is all black).
+TEST(Interrupt, AdaptiveShardStoppedAtTheTimeLimitResumesToTheUninterruptedPart) {
+    const fs::path dir = temp_dir("adaptive_shard_time_limit");
+    const fs::path part = dir / "part-1.ckpt";
+    const Args adaptive = {"--noise-threshold", "0.003", "--min-spp", "4", "--aov", "spp"};
+    Args stopped = adaptive;
+    stopped.insert(stopped.end(), {"--time-limit", "0.5"});
+    CliRun r = run(shard(part, kEndless, 2, stopped, "1/3"), dir / "stopped.log");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("stopped at the time limit"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(" min 4 max "), std::string::npos) << r.output;
+    const uint32_t done = samples_done(r.output);
+    ASSERT_GT(done, 0u) << r.output;
+    expect_part_resume_is_bit_identical(dir, part, done + done / 8 + 8, adaptive, "1/3");
 }
 
 // A small scene of its own, so that the test can change it.

@@ -114,6 +114,24 @@ TEST(ShardCli, MergedPartsOfAWeightedFilmWriteTheRendersBytes) {
     expect_merge_is_the_render(dir, {"render", write_weighted_scene(dir).string()}, "37x23");
 }
 
+// Adaptive sampling with the variance and spp layers: the parts carry the film's statistics and
+// stop where their own blocks stop (parts 2 and 5 of 5 after min_spp), and the merge is still the
+// render's bytes.
+TEST(ShardCli, MergedAdaptivePartsWriteTheRendersBytes) {
+    const fs::path dir = temp_dir("adaptive");
+    expect_merge_is_the_render(dir,
+                               {"render", kCornell, "--resolution", "40x24", "--spp", "64", "--noise-threshold", "0.1",
+                                "--min-spp", "4", "--aov", "variance,spp"},
+                               "40x24");
+    // The parts of 5 left there: blocks that stopped at min_spp and blocks that took every sample.
+    Args merge = {"merge"};
+    for (int i = 1; i <= 5; ++i) merge.push_back((dir / ("part-" + std::to_string(i) + ".ckpt")).string());
+    merge.insert(merge.end(), {"-o", (dir / "merged.exr").string()});
+    const CliRun m = run(merge, dir / "merge.log");
+    ASSERT_EQ(m.exit_code, 0) << m.output;
+    EXPECT_NE(m.output.find(" min 4 max 64; wrote"), std::string::npos) << m.output;
+}
+
 // `args` fails with exit 2 and exactly one line, "candela: error: " + `message`.
 void expect_one_line_error(const Args& args, const fs::path& dir, const std::string& message) {
     const CliRun r = run(args, dir / "error.log");
@@ -219,6 +237,45 @@ TEST(ShardCli, MergeRefusalsAreOneLineAndExitTwo) {
     expect_one_line_error({"merge", p[0], p[1], p[2], "-o", (dir / "m.tiff").string()}, dir,
                           "-o " + (dir / "m.tiff").string() + ": unknown image format");
     EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(ShardCli, AdaptiveSettingsMustMatchToMergeOrResume) {
+    const fs::path dir = temp_dir("adaptive_refusals");
+    const Args render = {"render", kCornell, "--resolution", "40x24", "--spp", "8", "--noise-threshold", "0.1",
+                         "--min-spp", "4"};
+    const std::vector<std::string> p = render_parts(dir, render, 2);
+    const std::string out = (dir / "m.exr").string();
+    const std::string odd = (dir / "odd.ckpt").string();
+    auto other = [&](const Args& more, const std::string& message) {
+        Args args = {"render", kCornell, "--resolution", "40x24", "--spp", "8"};
+        args.insert(args.end(), more.begin(), more.end());
+        args.insert(args.end(), {"--shard", "2/2", "-o", odd});
+        const CliRun r = run(args, dir / "odd.log");
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        expect_one_line_error({"merge", p[0], odd, "-o", out}, dir, odd + ": " + message);
+    };
+    other({"--noise-threshold", "0.2", "--min-spp", "4"},
+          "adaptive sampling threshold 0.2, min_spp 4, but " + p[0] +
+              " has adaptive sampling threshold 0.1, min_spp 4: parts of different renders cannot be merged");
+    other({"--noise-threshold", "0.1", "--min-spp", "6"}, "adaptive sampling threshold 0.1, min_spp 6, but " + p[0]);
+    other({}, "adaptive sampling off, but " + p[0] + " has adaptive sampling threshold 0.1, min_spp 4");
+    // Statistics without adaptive sampling (the spp layer) against parts without them.
+    other({"--aov", "spp"}, "adaptive sampling off, but " + p[0]);
+
+    Args resume = {"render", kCornell, "--resolution", "40x24", "--spp", "16", "--noise-threshold", "0.2",
+                   "--min-spp", "4", "--shard", "1/2", "--resume", p[0], "-o", p[0]};
+    expect_one_line_error(resume, dir,
+                          p[0] + ": cannot resume: the checkpoint used adaptive sampling with threshold 0.1 and "
+                                 "min_spp 4, this render adaptive sampling with threshold 0.2 and min_spp 4");
+    resume = {"render", kCornell, "--resolution", "40x24", "--spp", "16", "--shard", "1/2", "--resume", p[0],
+              "-o", p[0]};
+    expect_one_line_error(resume, dir,
+                          p[0] + ": cannot resume: the checkpoint used adaptive sampling with threshold 0.1 and "
+                                 "min_spp 4, this render no adaptive sampling");
+    // A whole-image target is no part's: refused with --shard.
+    expect_one_line_error({"render", kCornell, "--resolution", "40x24", "--target-error", "0.01", "--shard", "1/2",
+                           "-o", odd},
+                          dir, "--target-error does not run with --shard");
 }
 
 // Runs `command` with bash; its exit status and output.

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -179,6 +180,57 @@ TEST(ShardPart, RoundTripIsExactAndHoldsOnlyThePartsPixels) {
                     }
                 }
         }
+    }
+}
+
+// A film with statistics (adaptive sampling, the variance and spp layers): every value distinct.
+RenderState statistics_state() {
+    const int w = identity().width, h = identity().height;
+    Film film(w, h, false, AovLayers{}, true);
+    std::vector<double> values(size_t(w * h) * size_t(film.values_per_pixel()));
+    for (size_t i = 0; i < values.size(); ++i) values[i] = double(i) / 3.0;
+    film.write_region({0, 0, w, h}, values.data());
+    return RenderState{std::move(film), 12, 0};
+}
+
+// Parts of films with statistics carry them (film flags bit 1) and the adaptive settings (two u32
+// after the output settings), bit for bit; damage to them is a clear error.
+TEST(ShardPart, StatisticsAndAdaptiveSettingsRoundTrip) {
+    const fs::path dir = temp_dir("statistics");
+    const fs::path file = dir / "part.ckpt";
+    const RenderState s = statistics_state();
+    const Shard shard{2, 3};
+    for (std::optional<AdaptiveSettings> adaptive : {std::optional<AdaptiveSettings>{},
+                                                     std::optional<AdaptiveSettings>{AdaptiveSettings{0.05f, 8}}}) {
+        RenderIdentity id = identity();
+        id.adaptive = adaptive;
+        write_shard_part(file, id, info(shard, 16), s);
+        const std::string bytes = read_bytes(file);
+        size_t pixels = 0;
+        for (const Tile& t : shard_tiles(37, 21, shard)) pixels += size_t(t.pixels());
+        EXPECT_EQ(bytes.size(), kHeaderBytes + 8 + pixels * size_t(s.film.values_per_pixel()) * 8 + 8);
+        const ShardPart part = read_shard_part(file);
+        EXPECT_TRUE(part.statistics);
+        EXPECT_EQ(part.identity.adaptive, adaptive);
+        EXPECT_EQ(part.values_per_pixel, s.film.values_per_pixel());
+        Film film(37, 21, false, AovLayers{}, true);
+        put_part_values(part, film);
+        for (const Tile& t : shard_tiles(37, 21, shard)) {
+            std::vector<double> expected(size_t(t.pixels()) * size_t(film.values_per_pixel())), got(expected.size());
+            s.film.read_region(t.bounds(), expected.data());
+            film.read_region(t.bounds(), got.data());
+            ASSERT_EQ(std::memcmp(expected.data(), got.data(), expected.size() * sizeof(double)), 0);
+        }
+    }
+    const std::string bytes = read_bytes(file);
+    // From the film flags to the pixel count (the rest is as in the parts without statistics).
+    for (size_t at = kCommonHeaderBytes + 5 * 4; at < kHeaderBytes + 8; ++at) {
+        std::string damaged = bytes;
+        damaged[at] = char(damaged[at] ^ (at % 2 == 0 ? 0x01 : 0x80));
+        write_bytes(file, damaged);
+        EXPECT_EQ(error_of([&] { read_shard_part(file); }).rfind(file.string() + ": ", 0), 0u) << at;
+        write_bytes(file, bytes.substr(0, at));
+        EXPECT_EQ(error_of([&] { read_shard_part(file); }).rfind(file.string() + ": ", 0), 0u) << at;
     }
 }
 

@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <system_error>
 
 #include "candela/core/error.h"
+#include "candela/render/adaptive_sampling.h"
 #include "candela/render/shard_part.h"
 
 namespace candela {
@@ -39,12 +41,19 @@ void check_same_render(const fs::path& file, const ShardPart& part, const fs::pa
     if (part.info.target_spp != first.info.target_spp) differ("spp", part.info.target_spp, first.info.target_spp);
     if (a.sampler != b.sampler) differ("sampler", a.sampler, b.sampler);
     if (a.integrator != b.integrator) differ("integrator", a.integrator, b.integrator);
+    if (a.adaptive != b.adaptive) {
+        auto describe = [](const std::optional<AdaptiveSettings>& s) {
+            return s ? fmt::format("threshold {:g}, min_spp {}", s->threshold, s->min_spp) : std::string("off");
+        };
+        differ("adaptive sampling", describe(a.adaptive), describe(b.adaptive));
+    }
+    // After the adaptive settings, which the content hash also covers, so that they say what differs.
     if (a.content_hash != b.content_hash)
         fail(file, fmt::format("a part of another scene than {} (content hash {:016x}, there {:016x}: the scene file "
                                "or a file it names differs): parts of different renders cannot be merged",
                                first_file.string(), a.content_hash, b.content_hash));
     if (part.values_per_pixel != first.values_per_pixel || part.weighted != first.weighted ||
-        !(part.aovs == first.aovs))
+        part.statistics != first.statistics || !(part.aovs == first.aovs))
         differ("film values per pixel", part.values_per_pixel, first.values_per_pixel);
     const FilmSettings &o = part.info.output, &p = first.info.output;
     if (o.tonemap != p.tonemap || o.exposure != p.exposure || o.transfer != p.transfer || o.gamma != p.gamma)
@@ -82,8 +91,9 @@ MergedRender merge_shard_parts(const std::vector<fs::path>& files) {
             merged.parts = shard.count;
             merged.target_spp = part.info.target_spp;
             merged.output = part.info.output;
-            merged.state = RenderState{Film(part.identity.width, part.identity.height, part.weighted, part.aovs),
-                                       part.samples_done, 0};
+            merged.state = RenderState{
+                Film(part.identity.width, part.identity.height, part.weighted, part.aovs, part.statistics),
+                part.samples_done, 0};
             given.resize(size_t(shard.count));
         } else {
             check_same_render(file, part, files.front(), *first);
@@ -93,17 +103,29 @@ MergedRender merge_shard_parts(const std::vector<fs::path>& files) {
             fail(file, fmt::format("part {} of {} again: {} is part {} too (each part may be merged only once)",
                                    shard.index, shard.count, earlier->string(), shard.index));
         }
-        if (part.samples_done < part.info.target_spp)
-            fail(file, fmt::format("part {} of {} is incomplete: {} of {} spp done; finish it with candela render "
-                                   "SCENE --shard {}/{} --resume {} -o {}",
-                                   shard.index, shard.count, part.samples_done, part.info.target_spp, shard.index,
-                                   shard.count, file.string(), file.string()));
-        if (part.samples_done != merged.state.samples_done)
+        const std::optional<AdaptiveSettings>& adaptive = part.identity.adaptive;
+        if (!adaptive && part.samples_done != merged.state.samples_done && part.samples_done >= part.info.target_spp)
             fail(file, fmt::format("{} spp done, but {} has {}: parts with different sample counts cannot be merged "
                                    "(render them with the same --spp)",
                                    part.samples_done, files.front().string(), merged.state.samples_done));
-        given[size_t(shard.index - 1)] = file;
         put_part_values(part, merged.state.film);
+        // An adaptive part is complete when it has its spp or every block of it stopped sampling
+        // (adaptive_sampling.h): the point where the whole render would stop for its pixels.
+        const bool complete =
+            part.samples_done >= part.info.target_spp ||
+            (adaptive && is_decision_point(part.samples_done, uint32_t(adaptive->min_spp)) &&
+             active_pixels(merged.state.film, shard_tiles(merged.identity.width, merged.identity.height, shard),
+                           part.samples_done, *adaptive) == 0);
+        if (!complete)
+            fail(file, fmt::format("part {} of {} is incomplete: {} of {} spp done{}; finish it with candela render "
+                                   "SCENE --shard {}/{} --resume {} -o {}",
+                                   shard.index, shard.count, part.samples_done, part.info.target_spp,
+                                   adaptive ? " and pixels still sampling" : "", shard.index, shard.count,
+                                   file.string(), file.string()));
+        given[size_t(shard.index - 1)] = file;
+        // Adaptive parts end where their own pixels stop; one render of the whole image ends
+        // where the last of them does.
+        merged.state.samples_done = std::max(merged.state.samples_done, part.samples_done);
         merged.state.dropped_samples += part.dropped_samples;
         if (!first) {
             part.values = {};  // only its header is needed from here on

@@ -6,9 +6,14 @@
 //
 // Refused, with a SceneError naming the file(s): a file that is not a part (damaged, foreign, a
 // checkpoint of the whole image: read_shard_part); a part of another render than the first
-// file's (candela version, shard count, resolution, seed, sampler, integrator, target spp, scene
-// content, film layout, output settings); the same part twice; an incomplete part (fewer samples
-// done than its target spp); parts with different sample counts; a missing part.
+// file's (candela version, shard count, resolution, seed, sampler, integrator, target spp, adaptive
+// settings, scene content, film layout, output settings); the same part twice; an incomplete part
+// (fewer samples done than its target spp, and with adaptive sampling some of its pixels still
+// sampling); parts without adaptive sampling with different sample counts; a missing part.
+//
+// Adaptive parts: each block's decisions read only its own pixels (adaptive_sampling.h), so a part
+// stops where its own blocks have all stopped, and the merged film is the whole render's; its
+// samples done are the largest part's, where the whole render would have stopped.
 #include <cstdint>
 #include <filesystem>
 #include <vector>

@@ -23,8 +23,9 @@ using namespace checkpoint_codec;
 static_assert(int(Tonemap::kClamp) == 0 && int(Tonemap::kExposure) == 1 && int(Tonemap::kReinhard) == 2 &&
               int(Tonemap::kAces) == 3);
 static_assert(int(Transfer::kSrgb) == 0 && int(Transfer::kGamma) == 1);
-// What follows the common header: ten u32 and the pixel count.
-constexpr uint64_t kPartHeaderBytes = 10 * 4 + 8;
+// What follows the common header: ten u32, the adaptive settings (with statistics only) and the
+// pixel count.
+constexpr uint64_t kPartHeaderBytes = 10 * 4 + 2 * 4 + 8;
 
 uint32_t float_bits(float v) { return std::bit_cast<uint32_t>(v); }
 float bits_float(uint32_t v) { return std::bit_cast<float>(v); }
@@ -62,11 +63,17 @@ void write_shard_part(const fs::path& file, const RenderIdentity& identity, cons
     w.u32(info.target_spp);
     w.u32(uint32_t(kShardTileSize));
     w.u32(uint32_t(film.values_per_pixel()));
-    w.u32((film.weighted() ? kWeightedFlag : 0u) | (film.aovs().mask() << kAovFlagShift));
+    w.u32((film.weighted() ? kWeightedFlag : 0u) | (film.has_statistics() ? kStatisticsFlag : 0u) |
+          (film.aovs().mask() << kAovFlagShift));
     w.u32(uint32_t(info.output.tonemap));
     w.u32(float_bits(info.output.exposure));
     w.u32(uint32_t(info.output.transfer));
     w.u32(float_bits(info.output.gamma));
+    CANDELA_CHECK(film.has_statistics() || !identity.adaptive);
+    if (film.has_statistics()) {
+        w.u32(identity.adaptive ? uint32_t(identity.adaptive->min_spp) : 0u);
+        w.u32(identity.adaptive ? float_bits(identity.adaptive->threshold) : 0u);
+    }
     w.u64(pixel_count(tiles));
     std::vector<double> values;
     write_checksummed(file, w, [&](Writer& out, const std::function<void()>& flush) {
@@ -97,6 +104,8 @@ ShardPart read_shard_part(const fs::path& file) {
     part.info.output.exposure = bits_float(r.u32());
     const uint32_t transfer = r.u32();
     part.info.output.gamma = bits_float(r.u32());
+    const bool statistics = (flags & kStatisticsFlag) != 0;
+    const uint32_t min_spp = statistics ? r.u32() : 0u, threshold_bits = statistics ? r.u32() : 0u;
     const uint64_t pixels = r.u64();
     if (r.truncated()) fail(file, fmt::format("truncated part file: {} bytes, the header alone is longer", size));
     auto corrupt = [&](const std::string& what) { fail(file, "corrupt part file header: " + what); };
@@ -107,16 +116,24 @@ ShardPart read_shard_part(const fs::path& file) {
     if (tile_size != uint32_t(kShardTileSize))
         fail(file, fmt::format("a part of tiles of {} pixels; this candela cuts shards into tiles of {}", tile_size,
                                kShardTileSize));
-    if ((flags & ~(kWeightedFlag | (((1u << kAovLayerCount) - 1u) << kAovFlagShift))) != 0)
+    if ((flags & ~(kWeightedFlag | kStatisticsFlag | (((1u << kAovLayerCount) - 1u) << kAovFlagShift))) != 0)
         corrupt(fmt::format("unknown film flags {:#x}", flags));
     part.weighted = (flags & kWeightedFlag) != 0;
+    part.statistics = statistics;
     for (int l = 0; l < kAovLayerCount; ++l)
         if ((flags >> (kAovFlagShift + unsigned(l))) & 1u) part.aovs.add(AovLayer(l));
     part.identity.aov_layers = part.aovs.mask();
-    part.values_per_pixel = Film(1, 1, part.weighted, part.aovs).values_per_pixel();
+    if (min_spp != 0 || threshold_bits != 0) {
+        const float threshold = bits_float(threshold_bits);
+        if (min_spp < 2 || min_spp > (1u << 24) || !(threshold > 0.0f && threshold < 1.0f))
+            corrupt(fmt::format("adaptive sampling settings {}, {:#x}", min_spp, threshold_bits));
+        part.identity.adaptive = AdaptiveSettings{threshold, int(min_spp)};
+    }
+    part.values_per_pixel = Film(1, 1, part.weighted, part.aovs, part.statistics).values_per_pixel();
     if (values_per_pixel != uint32_t(part.values_per_pixel))
-        fail(file, fmt::format("a part of a film with {} values per pixel; this candela's film{} has {}",
-                               values_per_pixel, part.weighted ? " with weight sums" : "", part.values_per_pixel));
+        fail(file, fmt::format("a part of a film with {} values per pixel; this candela's film{}{} has {}",
+                               values_per_pixel, part.weighted ? " with weight sums" : "",
+                               part.statistics ? " with statistics" : "", part.values_per_pixel));
     if (tonemap > 3) corrupt(fmt::format("tone map {}", tonemap));
     if (transfer > 1) corrupt(fmt::format("transfer {}", transfer));
     part.info.output.tonemap = Tonemap(tonemap);
@@ -175,7 +192,7 @@ void check_part_matches(const fs::path& file, const ShardPart& part, const Rende
                                "with --shard {}/{})",
                                s.index, s.count, shard.index, shard.count, s.index, s.count));
     if (part.values_per_pixel != film.values_per_pixel() || part.weighted != film.weighted() ||
-        !(part.aovs == film.aovs()))
+        part.statistics != film.has_statistics() || !(part.aovs == film.aovs()))
         fail(file, fmt::format("cannot resume: the part's film keeps {} values per pixel, this render's {}",
                                part.values_per_pixel, film.values_per_pixel()));
 }

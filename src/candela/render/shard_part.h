@@ -14,15 +14,21 @@
 //                          with fewer done)
 //   tile size        u32   kShardTileSize (16), the side of the tiles shard_tiles cuts
 //   values per pixel u32   Film::values_per_pixel() of the film that rendered it
-//   film flags       u32   bit 0: the film keeps weight sums (a tabulated filter); others 0
+//   film flags       u32   bit 0: the film keeps weight sums (a tabulated filter); bit 1: it keeps
+//                          statistics (film.h: adaptive sampling, the variance and spp layers);
+//                          bits 8..: its AOV layers' mask (film/aov_layers.h); others 0
 //   tonemap          u32   film.tonemap: 0 clamp, 1 exposure, 2 reinhard, 3 aces
 //   exposure         f32   film.exposure
 //   transfer         u32   film.transfer: 0 srgb, 1 gamma
 //   gamma            f32   film.gamma
+//   adaptive   u32, u32    only with statistics (bit 1): sampler.adaptive's min_spp and the
+//                          threshold's binary32 bits; 0, 0 without adaptive sampling. (Parts
+//                          without statistics, all that earlier candelas wrote, lack the field.)
 //   pixel count      u64   the part's pixels: the sum of its tiles' pixels
 //   values           f64 x values per pixel x pixel count: the part's tiles in shard_tiles
 //                          order (row-major), each tile's pixels row-major, each pixel's values as
-//                          Film::read_region gives them (r g b sums, then the weight sum)
+//                          Film::read_region gives them (r g b sums, the weight sum, the AOV sums,
+//                          then the sums of squares and the sample count)
 //   checksum         u64   Hash64 (core/hash64.h) of every byte before it
 //
 // Written atomically, as checkpoints are.
@@ -50,9 +56,10 @@ struct PartInfo {
 
 // A part file's contents.
 struct ShardPart {
-    RenderIdentity identity;
+    RenderIdentity identity;     // with the adaptive settings (none without statistics)
     PartInfo info;
     bool weighted = false;       // the film keeps weight sums
+    bool statistics = false;     // the film keeps sums of squares and sample counts
     AovLayers aovs;              // the film's AOV layers (also in identity.aov_layers)
     int values_per_pixel = 0;    // Film::values_per_pixel()
     uint32_t samples_done = 0;   // per pixel of the part
