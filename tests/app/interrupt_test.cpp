@@ -251,6 +251,13 @@ TEST(Interrupt, AdaptiveShardStoppedAtTheTimeLimitResumesToTheUninterruptedPart)
     EXPECT_NE(r.output.find(" min 4 max "), std::string::npos) << r.output;
     const uint32_t done = samples_done(r.output);
     ASSERT_GT(done, 0u) << r.output;
+    // Blocks still sampling: no part to merge yet.
+    CliRun merge = run({"merge", part.string(), "-o", (dir / "m.exr").string()}, dir / "merge.log");
+    EXPECT_EQ(merge.exit_code, 2) << merge.output;
+    EXPECT_NE(merge.output.find(part.string() + ": part 1 of 3 is incomplete: " + std::to_string(done) + " of " +
+                                kEndless + " spp done and pixels still sampling"),
+              std::string::npos)
+        << merge.output;
     expect_part_resume_is_bit_identical(dir, part, done + done / 8 + 8, adaptive, "1/3");
 }
 
