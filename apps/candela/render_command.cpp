@@ -173,9 +173,10 @@ MemoryLimit memory_limit(const RenderArgs& a) {
     return MemoryLimit{*bytes, "--memory-limit is"};
 }
 
-// The loader checked the scene's memory at its own resolution; --resolution may ask for more.
+// The loader checked the scene's memory at its own resolution; --resolution may ask for more, and
+// --target-error for the film's statistics.
 void check_memory(const RenderArgs& a, const Scene& scene, const MemoryLimit& limit) {
-    if (std::optional<std::string> refused = memory_refusal(scene, limit))
+    if (std::optional<std::string> refused = memory_refusal(scene, limit, a.adaptive.target_error.has_value()))
         bad_flag(a.resolution ? fmt::format("--resolution {}: {}", *a.resolution, *refused) : *refused);
 }
 

@@ -182,6 +182,18 @@ TEST(ResourceLimits, CliRefusesAResolutionFlagBeyondTheMemoryLimit) {
     EXPECT_FALSE(fs::exists(out));
 }
 
+// --target-error's statistics (64 bytes a pixel) are charged: 16384^2 pixels need 18 GiB without
+// them, 34 GiB with them.
+TEST(ResourceLimits, CliChargesTheStatisticsOfATargetError) {
+    const std::string cornell = std::string(CANDELA_SOURCE_DIR) + "/scenes/cornell-box/scene.json";
+    const fs::path out = temp_dir("cli_target_error") / "x.png";
+    const CliResult r = run_candela("render " + cornell + " --resolution 16384x16384 --target-error 0.01 " +
+                                    "--memory-limit 24G -o " + out.string());
+    expect_one_line_error(r, "--resolution 16384x16384: the scene at 16384x16384 pixels (");
+    EXPECT_NE(r.err.find("needs about 34.0 GiB of memory, but --memory-limit is 24.0 GiB"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(ResourceLimits, CliRefusesASceneResolutionBeyondTheMemoryLimit) {
     const fs::path dir = temp_dir("cli_scene");
     const fs::path scene = write_file(dir / "scene.json", "{\n  \"camera\": {\"resolution\": [32768, 32768]}\n}\n");

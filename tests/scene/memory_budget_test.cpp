@@ -11,6 +11,7 @@
 #include <string>
 
 #include "candela/geometry/accelerator.h"
+#include "candela/scene/scene.h"
 
 namespace candela {
 namespace {
@@ -34,6 +35,20 @@ TEST(MemoryEstimate, AovLayersAddTheirSumsAndImages) {
     aovs.add(AovLayer::kDepth);
     // (3 + 1) doubles in two films, and two resolved layers with their outputs.
     EXPECT_EQ(aov_memory_bytes(640, 480, aovs), uint64_t(640) * 480 * (4 * 16 + 2 * 24));
+}
+
+// The statistics are charged once, whichever of adaptive sampling, the variance or spp layer and
+// --target-error (the `statistics` argument) asks for them.
+TEST(MemoryEstimate, StatisticsAreChargedWhenAnythingAsksForThem) {
+    Scene scene;
+    scene.camera.width = 640;
+    scene.camera.height = 480;
+    const uint64_t plain = scene_memory_bytes(scene), stats = film_statistics_memory_bytes(640, 480);
+    EXPECT_EQ(stats, uint64_t(640) * 480 * 64);
+    EXPECT_EQ(scene_memory_bytes(scene, true), plain + stats);
+    scene.sampler.adaptive = AdaptiveSettings{};
+    EXPECT_EQ(scene_memory_bytes(scene), plain + stats);
+    EXPECT_EQ(scene_memory_bytes(scene, true), plain + stats);
 }
 
 TEST(MemoryEstimate, MeshGrowsWithCountsAndAttributes) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace candela {
@@ -27,10 +28,15 @@ ProgressBar::~ProgressBar() {
     draw(true);
 }
 
+double ProgressBar::fraction() const {
+    const uint64_t done = done_.load(std::memory_order_relaxed);
+    const uint64_t total = total_.load(std::memory_order_relaxed);
+    return total > 0 ? std::min(1.0, double(done) / double(total)) : 1.0;
+}
+
 void ProgressBar::draw(bool final_line) const {
     double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    uint64_t done = done_.load(std::memory_order_relaxed);
-    double fraction = total_ > 0 ? double(done) / double(total_) : 1.0;
+    const double fraction = this->fraction();
     constexpr int kWidth = 30;
     int filled = int(fraction * kWidth);
     std::string bar(size_t(filled), '#');

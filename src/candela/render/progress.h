@@ -22,6 +22,14 @@ class ProgressBar {
         done_.fetch_add(units, std::memory_order_relaxed);
         rays_.fetch_add(rays, std::memory_order_relaxed);
     }
+    // Re-estimates the work: `remaining` more units after those done so far. Adaptive sampling calls
+    // it at its decision points, between passes (no advance() runs concurrently), so that the bar
+    // fills as the active pixels' samples are taken, not as if every pixel took every sample.
+    void set_remaining(uint64_t remaining) {
+        total_.store(done_.load(std::memory_order_relaxed) + remaining, std::memory_order_relaxed);
+    }
+    // The part of the work done, in [0, 1], as the bar shows it.
+    double fraction() const;
     // A short text shown after the rate (e.g. the estimated error), from the calling thread.
     void set_note(std::string note) {
         if (!enabled_) return;
@@ -32,7 +40,7 @@ class ProgressBar {
   private:
     void draw(bool final_line) const;
 
-    uint64_t total_;
+    std::atomic<uint64_t> total_;
     bool enabled_;
     std::atomic<uint64_t> done_{0};
     std::atomic<uint64_t> rays_{0};

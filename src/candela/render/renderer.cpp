@@ -194,6 +194,22 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
     // tiles that it then renders alone, so at the end of a pass the other threads idle while it
     // finishes its run. With passes that end often, that cost 4% at 2 threads (bench/RESULTS.md);
     // a tile is milliseconds of work, far above a task's cost.
+    // With adaptive sampling: each tile's pixels that take samples until the next decision point
+    // (blocks stop only at decision points), counted there for the progress bar.
+    std::vector<uint64_t> tile_active;
+    auto update_active = [&](ProgressBar& progress) {
+        tile_active.assign(tiles.size(), 0);
+        uint64_t active = 0;
+        for (size_t t = 0; t < tiles.size(); ++t) {
+            for (const PixelBounds& block : tile_blocks(tiles[t]))
+                if (block_active(state.film, block, state.samples_done, *adaptive))
+                    tile_active[t] += uint64_t(block.width()) * uint64_t(block.height());
+            active += tile_active[t];
+        }
+        progress.set_remaining(active * (spp - std::min(spp, state.samples_done)));
+        return active;
+    };
+
     auto run_pass = [&](tbb::task_arena& arena, const Pass& pass, ProgressBar& progress) {
         const uint64_t n = pass.end - pass.begin;
         arena.execute([&] {
@@ -205,7 +221,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
                     const Tile& tile = tiles[t];
                     uint64_t rays_before = tally.rays.total();
                     frame.render_tile(tile, pass.begin, pass.end, *pass.from, *pass.to, tally);
-                    progress.advance(uint64_t(tile.pixels()) * n, tally.rays.total() - rays_before);
+                    const uint64_t sampled = tile_active.empty() ? uint64_t(tile.pixels()) : tile_active[t];
+                    progress.advance(sampled * n, tally.rays.total() - rays_before);
                 }
             }, tbb::simple_partitioner());
         });
@@ -221,7 +238,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
         progress.set_note(fmt::format("relMSE ~{:.3g}", estimate));
         if (!is_decision_point(state.samples_done, first_decision)) return false;
         if (options.target_error > 0.0 && estimate <= options.target_error) return true;
-        return adaptive && active_pixels(state.film, tiles, state.samples_done, *adaptive) == 0;
+        return adaptive && update_active(progress) == 0;
     };
 
     Clock::time_point render_start = Clock::now();
@@ -229,6 +246,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
         ProgressBar progress(pixels * (spp - std::min(spp, start_samples)), options.progress);
         tbb::task_arena arena(threads);
         PassTiming previous;
+        if (adaptive) update_active(progress);  // a resumed render's blocks may have stopped
         result.stats.converged = converged(progress);
         while (state.samples_done < spp && !result.stats.converged) {
             if (check_stop()) break;

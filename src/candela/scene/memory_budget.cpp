@@ -143,10 +143,10 @@ uint64_t texture_loading_memory_bytes(uint64_t file_bytes, int width, int height
                                   uint64_t(std::max(channels, 0)) * uint64_t(decoded_bytes)));
 }
 
-uint64_t scene_memory_bytes(const Scene& scene) {
+uint64_t scene_memory_bytes(const Scene& scene, bool statistics) {
     uint64_t bytes = film_memory_bytes(scene.camera.width, scene.camera.height);
     bytes = plus(bytes, aov_memory_bytes(scene.camera.width, scene.camera.height, scene.film.aovs));
-    if (scene.sampler.adaptive || film_needs_statistics(scene.film.aovs))
+    if (statistics || scene.sampler.adaptive || film_needs_statistics(scene.film.aovs))
         bytes = plus(bytes, film_statistics_memory_bytes(scene.camera.width, scene.camera.height));
     for (const TriangleMesh& m : scene.meshes)
         bytes = plus(bytes, mesh_memory_bytes(m.positions.size(), m.triangle_count(), !m.normals.empty(),
@@ -191,11 +191,11 @@ std::optional<uint64_t> parse_byte_count(std::string_view text) {
     return count << shift;
 }
 
-std::optional<std::string> memory_refusal(const Scene& scene, const MemoryLimit& limit) {
+std::optional<std::string> memory_refusal(const Scene& scene, const MemoryLimit& limit, bool statistics) {
     uint64_t triangles = 0;
     for (const TriangleMesh& m : scene.meshes) triangles += m.triangle_count();
     MemoryBudget budget(limit);
-    return budget.charge(scene_memory_bytes(scene),
+    return budget.charge(scene_memory_bytes(scene, statistics),
                          fmt::format("the scene at {}x{} pixels ({} triangles{}{})", scene.camera.width,
                                      scene.camera.height, triangles,
                                      scene.environment ? ", an environment map" : "",

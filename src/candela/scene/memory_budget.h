@@ -52,7 +52,9 @@ uint64_t texture_memory_bytes(int width, int height, int channels, int bytes_per
 uint64_t texture_loading_memory_bytes(uint64_t file_bytes, int width, int height, int channels,
                                       int bytes_per_channel);
 // A loaded scene at its camera resolution: film, meshes, environment and texture images.
-uint64_t scene_memory_bytes(const Scene& scene);
+// `statistics`: the film keeps statistics whatever the scene says (--target-error asks for them);
+// adaptive sampling and the variance and spp layers are charged from the scene itself.
+uint64_t scene_memory_bytes(const Scene& scene, bool statistics = false);
 
 // "512 B", "1.5 KiB", "23.4 GiB".
 std::string format_bytes(uint64_t bytes);
@@ -80,6 +82,7 @@ class MemoryBudget {
 
 // The loaded scene as it will render (at its camera resolution, perhaps overridden since it was
 // loaded) against `limit`: the message when it does not fit.
-std::optional<std::string> memory_refusal(const Scene& scene, const MemoryLimit& limit);
+// `statistics` as for scene_memory_bytes.
+std::optional<std::string> memory_refusal(const Scene& scene, const MemoryLimit& limit, bool statistics = false);
 
 }  // namespace candela
