@@ -348,7 +348,8 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
 
     options.threads = a.threads.value_or(0);
     if (a.tile_size) options.tile_size = *a.tile_size;
-    options.progress = root && isatty(fileno(stderr)) != 0;
+    // Under mpirun a rank's stderr is a pipe even on a terminal; its stdout is a terminal then.
+    options.progress = root && (isatty(fileno(stderr)) != 0 || (mpi && isatty(fileno(stdout)) != 0));
     options.stop = [] { return cli::stop_signal() != 0; };
     if (shard) options.shard = *shard;
     if (a.time_limit)

@@ -87,6 +87,10 @@ class RootRender {
             std::vector<TileTally> tallies(static_cast<size_t>(threads));
             std::vector<std::thread> workers;
             for (int i = 0; i < threads; ++i) workers.emplace_back([this, &tally = tallies[size_t(i)]] { render_locally(tally); });
+            if (adaptive_) {
+                std::lock_guard lock(mutex_);
+                update_active();  // a resumed render's blocks may have stopped
+            }
             serve();
             {
                 std::lock_guard lock(mutex_);
@@ -141,7 +145,7 @@ class RootRender {
             lock.unlock();
             const uint64_t rays_before = tally.rays.total(), dropped_before = tally.dropped;
             frame_.render_tile(tile, begin, end, state_.film, next_, tally);
-            progress_->advance(uint64_t(tile.pixels()) * (end - begin), tally.rays.total() - rays_before);
+            progress_->advance(sampled_pixels(size_t(tile_index)) * (end - begin), tally.rays.total() - rays_before);
             lock.lock();
             pass_dropped_ += tally.dropped - dropped_before;
             scheduler_.done(tile_index, 0);
@@ -223,9 +227,29 @@ class RootRender {
         if (!is_decision_point(state_.samples_done, first_decision_)) return false;
         if (options_.render.target_error > 0.0 && *relmse_estimate_ <= options_.render.target_error)
             converged_ = true;
-        else if (adaptive_ && active_pixels(state_.film, tiles_, state_.samples_done, *adaptive_) == 0)
+        else if (adaptive_ && update_active() == 0)
             converged_ = true;
         return converged_;
+    }
+
+    // Adaptive sampling, at a decision point (or the start): each tile's pixels that take samples
+    // until the next one, for the progress bar, which then counts them only (as render() does).
+    uint64_t update_active() {
+        tile_active_.assign(tiles_.size(), 0);
+        uint64_t active = 0;
+        for (size_t t = 0; t < tiles_.size(); ++t) {
+            for (const PixelBounds& block : tile_blocks(tiles_[t]))
+                if (block_active(state_.film, block, state_.samples_done, *adaptive_))
+                    tile_active_[t] += uint64_t(block.width()) * uint64_t(block.height());
+            active += tile_active_[t];
+        }
+        progress_->set_remaining(active * (spp_ - std::min(spp_, state_.samples_done)));
+        return active;
+    }
+
+    // The pixels of tile `t` that take this pass's samples.
+    uint64_t sampled_pixels(size_t t) const {
+        return tile_active_.empty() ? uint64_t(tiles_[t].pixels()) : tile_active_[t];
     }
 
     // Every tile of the pass is home (mutex_ held): `next_` is the new state.
@@ -288,7 +312,7 @@ class RootRender {
                 next_.write_region(tile.bounds(), scratch_.data());
                 pass_dropped_ += dropped;
                 scheduler_.done(int(tile_index), m.source);
-                progress_->advance(uint64_t(tile.pixels()) * (pass_end_ - pass_begin_), rays.total());
+                progress_->advance(sampled_pixels(tile_index) * (pass_end_ - pass_begin_), rays.total());
                 break;
             }
             case TileMessageType::kStop: {
@@ -340,6 +364,7 @@ class RootRender {
     double samples_before_ = 0;          // films with statistics: the samples the start state had
     std::optional<double> relmse_estimate_;
     bool converged_ = false;
+    std::vector<uint64_t> tile_active_;  // adaptive sampling: see update_active
     MpiChannel channel_;
     ProgressBar* progress_ = nullptr;
 

@@ -44,7 +44,7 @@ void ProgressBar::draw(bool final_line) const {
     double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
     double rate = elapsed > 0.0 ? double(rays_.load(std::memory_order_relaxed)) / elapsed : 0.0;
     // \r and the erase-line code redraw in place; the final call ends the line.
-    fmt::print(stderr, "\r\033[K[{}] {:5.1f}%  {} elapsed  ETA {}  {}rays/s{}{}", bar, 100.0 * fraction,
+    fmt::print(stderr, "\r\033[K[{}] {:5.1f}%  {} elapsed  ETA {}  {}rays/s{}{}{}", bar, 100.0 * fraction,
                format_duration(elapsed), format_duration(eta), format_count(rate), note_.empty() ? "" : "  ",
                note_, final_line ? "\n" : "");
     std::fflush(stderr);
