@@ -348,8 +348,9 @@ int render_on_this_rank(const RenderArgs& a, [[maybe_unused]] const MpiSession* 
 
     options.threads = a.threads.value_or(0);
     if (a.tile_size) options.tile_size = *a.tile_size;
-    // Under mpirun a rank's stderr is a pipe even on a terminal; its stdout is a terminal then.
-    options.progress = root && (isatty(fileno(stderr)) != 0 || (mpi && isatty(fileno(stdout)) != 0));
+    // Under mpirun a rank's stderr is a pipe even on a terminal (and its stdout a pty even into a
+    // file), so there the bar is drawn only when asked for.
+    options.progress = root && (isatty(fileno(stderr)) != 0 || a.progress);
     options.stop = [] { return cli::stop_signal() != 0; };
     if (shard) options.shard = *shard;
     if (a.time_limit)
@@ -444,6 +445,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
     cmd->add_option("--seed", args.seed, "Random seed (overrides sampler.seed)");
     cmd->add_option("--threads", args.threads,
                     "Render threads; 0 = all cores (default; under MPI: per rank, the host's cores shared by its ranks)");
+    cmd->add_flag("--progress", args.progress,
+                  "Draw the progress bar even when stderr is not a terminal (under mpirun it never is)");
     cmd->add_option("--tile-size", args.tile_size,
                     "Pixels per side of the tiles threads and MPI ranks take (default 16); does not change the image");
     cmd->add_option("--resolution", args.resolution, "Image size WIDTHxHEIGHT (overrides camera.resolution)");

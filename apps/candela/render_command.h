@@ -18,6 +18,7 @@ struct RenderArgs {
     std::optional<uint64_t> seed;
     std::optional<int> threads;
     std::optional<int> tile_size;  // pixels per tile side
+    bool progress = false;         // --progress: draw the bar on stderr whatever it is
     std::optional<std::string> resolution;
     std::optional<std::string> integrator;
     std::optional<std::string> sampler;

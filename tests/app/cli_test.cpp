@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "candela/image/image_layers.h"
+#include "support/test_files.h"
 
 namespace {
 
@@ -32,12 +33,7 @@ CliResult run_candela(const std::string& args) {
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
-fs::path temp_dir(const std::string& name) {
-    fs::path dir = fs::path(CANDELA_TEST_BINARY_DIR) / ("cli_" + name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path temp_dir(const std::string& name) { return candela::test::fresh_dir("cli_" + name); }
 
 const std::string kScene = std::string(CANDELA_SOURCE_DIR) + "/scenes/cornell-box/scene.json";
 

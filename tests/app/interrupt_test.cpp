@@ -13,6 +13,7 @@
 
 #include "app/child_process.h"
 #include "candela/render/checkpoint.h"
+#include "support/test_files.h"
 
 namespace candela {
 namespace {
@@ -26,19 +27,9 @@ const std::string kCornell = std::string(CANDELA_SOURCE_DIR) + "/scenes/cornell-
 // More samples than any test waits for: these renders always end by a stop.
 const std::string kEndless = "1000000";
 
-fs::path temp_dir(const std::string& name) {
-    fs::path dir = fs::path(CANDELA_TEST_BINARY_DIR) / ("interrupt_" + name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path temp_dir(const std::string& name) { return test::fresh_dir("interrupt_" + name); }
 
-std::string read_bytes(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::read_bytes;
 
 struct CliRun {
     int exit_code;

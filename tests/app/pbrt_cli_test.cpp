@@ -15,6 +15,8 @@
 #include <fstream>
 #include <string>
 
+#include "support/test_files.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -36,12 +38,7 @@ CliResult run_candela_in(const fs::path& cwd, const std::string& args) {
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
-fs::path temp_dir(const std::string& name) {
-    fs::path dir = fs::path(CANDELA_TEST_BINARY_DIR) / ("pbrt_cli_" + name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path temp_dir(const std::string& name) { return candela::test::fresh_dir("pbrt_cli_" + name); }
 
 // A small pbrt-v4 scene: a lit triangle mesh (inline, so convert writes a PLY) and a sphere.
 constexpr const char* kTinyScene = R"(LookAt 0 0 -5  0 0 0  0 1 0

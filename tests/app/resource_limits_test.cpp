@@ -16,6 +16,7 @@
 
 #include "candela/core/error.h"
 #include "candela/formats/json/scene_loader.h"
+#include "support/test_files.h"
 
 namespace candela {
 namespace {
@@ -26,12 +27,7 @@ constexpr uint64_t kGiB = uint64_t(1) << 30;
 
 const MemoryLimit kEightGiB{8 * kGiB, "the test's limit is"};
 
-fs::path temp_dir(const std::string& name) {
-    const fs::path dir = fs::path(CANDELA_TEST_BINARY_DIR) / ("resources_" + name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path temp_dir(const std::string& name) { return test::fresh_dir("resources_" + name); }
 
 fs::path write_file(const fs::path& file, const std::string& text) {
     std::ofstream(file, std::ios::binary) << text;

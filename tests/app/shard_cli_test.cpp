@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/child_process.h"
+#include "support/test_files.h"
 
 namespace candela {
 namespace {
@@ -25,19 +26,9 @@ using Args = std::vector<std::string>;
 
 const std::string kCornell = std::string(CANDELA_SOURCE_DIR) + "/scenes/cornell-box/scene.json";
 
-fs::path temp_dir(const std::string& name) {
-    fs::path dir = fs::path(CANDELA_TEST_BINARY_DIR) / ("shard_cli_" + name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path temp_dir(const std::string& name) { return test::fresh_dir("shard_cli_" + name); }
 
-std::string read_bytes(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::read_bytes;
 
 struct CliRun {
     int exit_code;

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "app/child_process.h"
+#include "support/test_files.h"
 
 namespace candela {
 namespace {
@@ -50,19 +51,9 @@ class MpiEnvironment : public ::testing::Environment {
 };
 const auto* const kEnvironment = ::testing::AddGlobalTestEnvironment(new MpiEnvironment);
 
-fs::path temp_dir(const std::string& name) {
-    fs::path dir = fs::path(CANDELA_TEST_BINARY_DIR) / ("mpi_" + name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path temp_dir(const std::string& name) { return test::fresh_dir("mpi_" + name); }
 
-std::string read_bytes(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::read_bytes;
 
 struct CliRun {
     int exit_code;
@@ -182,6 +173,19 @@ TEST(MpiRender, GivesTheAovLayersOfOneProcess) {
         EXPECT_FALSE(a.empty()) << layer;
         EXPECT_TRUE(a == read_bytes(dir / (std::string("one") + layer))) << layer;
     }
+}
+
+TEST(MpiRender, ProgressShowsTheWholeJobWhenAskedFor) {
+    const fs::path dir = temp_dir("progress");
+    // Under mpirun stderr is never a terminal: no bar unless --progress, then one for the job.
+    const CliRun quiet = run_mpi(2, render_args(dir, "quiet", "4", 1), dir / "quiet.log");
+    ASSERT_EQ(quiet.exit_code, 0) << quiet.output;
+    EXPECT_EQ(quiet.output.find('%'), std::string::npos) << quiet.output;
+    const CliRun shown = run_mpi(2, render_args(dir, "shown", "4", 1, {"--progress"}), dir / "shown.log");
+    ASSERT_EQ(shown.exit_code, 0) << shown.output;
+    EXPECT_NE(shown.output.find("100.0%"), std::string::npos) << shown.output;
+    // The bar's last line ends before the summary line.
+    EXPECT_NE(shown.output.find("rays/s\ncandela: 40x30"), std::string::npos) << shown.output;
 }
 
 TEST(MpiRender, AdaptiveSamplingAndATargetErrorGiveTheBitsOfOneProcess) {

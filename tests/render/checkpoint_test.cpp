@@ -15,6 +15,7 @@
 
 #include "candela/core/error.h"
 #include "candela/core/hash64.h"
+#include "support/test_files.h"
 
 namespace candela {
 namespace {
@@ -28,12 +29,7 @@ fs::path temp_file(const std::string& name) {
     return dir / name;
 }
 
-std::string read_bytes(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::read_bytes;
 
 void write_bytes(const fs::path& file, const std::string& bytes) { std::ofstream(file, std::ios::binary) << bytes; }
 

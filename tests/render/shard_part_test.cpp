@@ -18,25 +18,16 @@
 #include "candela/render/shard.h"
 #include "candela/render/shard_merge.h"
 #include "candela/render/shard_part.h"
+#include "support/test_files.h"
 
 namespace candela {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_dir(const std::string& name) {
-    fs::path dir = fs::path(CANDELA_TEST_BINARY_DIR) / ("shard_part_" + name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path temp_dir(const std::string& name) { return test::fresh_dir("shard_part_" + name); }
 
-std::string read_bytes(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::read_bytes;
 
 void write_bytes(const fs::path& file, const std::string& bytes) { std::ofstream(file, std::ios::binary) << bytes; }
 

@@ -15,25 +15,16 @@
 #include "candela/render/shard_merge.h"
 #include "candela/render/shard_part.h"
 #include "support/test_scenes.h"
+#include "support/test_files.h"
 
 namespace candela {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_dir(const std::string& name) {
-    fs::path dir = fs::path(CANDELA_TEST_BINARY_DIR) / ("shard_render_" + name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path temp_dir(const std::string& name) { return test::fresh_dir("shard_render_" + name); }
 
-std::string read_bytes(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::read_bytes;
 
 bool same_bits(const Image& a, const Image& b) {
     return a.width == b.width && a.height == b.height &&
