@@ -31,10 +31,15 @@ bool same_bits(const Image& a, const Image& b) {
            std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Rgb)) == 0;
 }
 
+// The two arrays hold the same bits (memcmp may not be given the null data() of an empty vector).
+template <class T>
+bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
 bool same_bits(const Film& a, const Film& b) {
     return a.width() == b.width() && a.height() == b.height() && a.weighted() == b.weighted() &&
-           std::memcmp(a.sums().data(), b.sums().data(), a.sums().size() * sizeof(PixelSum)) == 0 &&
-           std::memcmp(a.weights().data(), b.weights().data(), a.weights().size() * sizeof(double)) == 0;
+           same_bytes(a.sums(), b.sums()) && same_bytes(a.weights(), b.weights());
 }
 
 // Sides not multiples of the 16-pixel tile: 3 x 2 tiles, the right and bottom ones partial.
