@@ -15,6 +15,7 @@
 
 #include "candela/core/error.h"
 #include "candela/core/hash64.h"
+#include "support/scene_error_of.h"
 #include "support/test_files.h"
 
 namespace candela {
@@ -58,16 +59,7 @@ RenderState state() {
 // height, samples done, dropped samples.
 constexpr size_t kHeaderBytes = 8 + 4 + (4 + 5) + (4 + 4) + (4 + 11) + 8 + 8 + 4 + 4 + 4 + 8;
 
-// The message of the SceneError that `f` throws; fails the test when it throws nothing.
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "expected a SceneError";
-    return "";
-}
+using test::error_of;
 
 TEST(Checkpoint, RoundTripIsExact) {
     const fs::path file = temp_file("round_trip.ckpt");

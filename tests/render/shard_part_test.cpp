@@ -18,6 +18,7 @@
 #include "candela/render/shard.h"
 #include "candela/render/shard_merge.h"
 #include "candela/render/shard_part.h"
+#include "support/scene_error_of.h"
 #include "support/test_files.h"
 
 namespace candela {
@@ -31,16 +32,7 @@ using test::read_bytes;
 
 void write_bytes(const fs::path& file, const std::string& bytes) { std::ofstream(file, std::ios::binary) << bytes; }
 
-// The message of the SceneError that `f` throws; fails the test when it throws nothing.
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "expected a SceneError";
-    return "";
-}
+using test::error_of;
 
 TEST(ShardTiles, PartitionTheFilmEvenly) {
     for (auto [w, h] : {std::pair{1, 1}, {16, 16}, {17, 33}, {100, 37}, {256, 144}}) {
