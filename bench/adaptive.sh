@@ -15,7 +15,7 @@ min_spp=${MIN_SPP:-8}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 scenes=("$@")
-[ ${#scenes[@]} -gt 0 ] || scenes=(cornell-box bunny-sky)
+[ ${#scenes[@]} -gt 0 ] || scenes=(cornell-glass bunny-sky cornell-box)
 
 run() {  # run OUT.exr FLAGS...: prints "relMSE render_seconds summary"
   local out=$1; shift

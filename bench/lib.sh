@@ -6,10 +6,10 @@
 # resolution), the relMSE target for "time to target" (about 10x the reference's own relMSE,
 # bench/references/*.json), and the reference spp (two halves of spp/2 with different seeds, at
 # 1/4 of the resolution). Change a target or reference spp only together with new references.
-bench_all_scenes=(cornell-box smallpt dragon displaced-sphere bunny-sky)
-declare -A bench_spp=([cornell-box]=64 [smallpt]=8 [dragon]=16 [displaced-sphere]=8 [bunny-sky]=16)
-declare -A bench_target=([cornell-box]=0.001 [smallpt]=0.15 [dragon]=0.001 [displaced-sphere]=0.002 [bunny-sky]=0.01)
-declare -A ref_spp=([cornell-box]=32768 [smallpt]=2048 [dragon]=4096 [displaced-sphere]=4096 [bunny-sky]=4096)
+bench_all_scenes=(cornell-box smallpt dragon displaced-sphere bunny-sky cornell-glass)
+declare -A bench_spp=([cornell-box]=64 [smallpt]=8 [dragon]=16 [displaced-sphere]=8 [bunny-sky]=16 [cornell-glass]=64)
+declare -A bench_target=([cornell-box]=0.001 [smallpt]=0.15 [dragon]=0.001 [displaced-sphere]=0.002 [bunny-sky]=0.01 [cornell-glass]=0.002)
+declare -A ref_spp=([cornell-box]=32768 [smallpt]=2048 [dragon]=4096 [displaced-sphere]=4096 [bunny-sky]=4096 [cornell-glass]=65536)
 ref_factor=4
 # The generated mesh of the displaced-sphere scene (candela_make_mesh --triangles).
 sphere_triangles=10000000
