@@ -14,7 +14,8 @@
 # to bench/references/NAME.exr as half-float EXR; NAME.json records the command, spp, commit,
 # date, render time and the reference's own expected relMSE (relMSE(A, B) / 4), which the
 # benchmark's targets must stay well above. Runs at low priority (nice): about 15 minutes for
-# all five scenes on a quiet 2-core machine (35 minutes while others compiled).
+# the first five scenes on a quiet 2-core machine (35 minutes while others compiled), and 12
+# minutes more for cornell-glass (on a busy machine).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source bench/lib.sh
