@@ -1,6 +1,6 @@
 // The per-pixel error estimates of a film with statistics (film/pixel_statistics.h) on synthetic
 // pixels whose samples have a known distribution: f(u) = u^2 of the sampler's first number, with
-// mean 1/3 and variance 4/45. Bounds are 4 standard deviations of the estimator, derived below,
+// mean 1/3 and variance 4/45; both estimates (from the squares and from the halves). Bounds are 4 standard deviations of the estimator, derived below,
 // with fixed seeds.
 #include <gtest/gtest.h>
 
@@ -35,6 +35,7 @@ Film synthetic_film(SamplerType type, uint64_t seed, std::vector<double>& means)
                 add_to_sum(film.sum(x, y), v);
                 add_square_to_sum(film.squares(x, y), v);
                 film.count(x, y) += 1.0;
+                film.prefix_sums(x, y).after_sample(s, film.sum(x, y), film.count(x, y));
             }
             means.push_back(film.sum(x, y)[0] / kSpp);
         }
@@ -46,6 +47,28 @@ double mean_estimate(const Film& film) {
     for (int y = 0; y < kSide; ++y)
         for (int x = 0; x < kSide; ++x) total += variance_of_mean(film, x, y)[1];
     return total / double(kSide * kSide);
+}
+
+// The per-pixel estimates from the halves (channel g), one per pixel.
+std::vector<double> halves_estimates(const Film& film) {
+    std::vector<double> e;
+    for (int y = 0; y < kSide; ++y)
+        for (int x = 0; x < kSide; ++x) e.push_back(variance_of_mean_from_halves(film, x, y)[1]);
+    return e;
+}
+
+double average(const std::vector<double>& v) {
+    double total = 0.0;
+    for (double x : v) total += x;
+    return total / double(v.size());
+}
+
+// The means of the first halves' samples (kSpp / 2 of them) across pixels.
+std::vector<double> first_half_means(const Film& film) {
+    std::vector<double> m;
+    for (int y = 0; y < kSide; ++y)
+        for (int x = 0; x < kSide; ++x) m.push_back(film.prefix_sums(x, y).sum[0][1] / (kSpp / 2));
+    return m;
 }
 
 // The variance of the pixel means across pixels: each pixel's samples are randomized
@@ -92,44 +115,98 @@ TEST(PixelStatistics, SobolSamplesGiveAConservativeVarianceOfTheMean) {
     EXPECT_GT(mean_estimate(film), 5.0 * v);
 }
 
+// The estimate from the halves, (A - B)^2 / 4 with A and B the means of samples [0, 8) and
+// [8, 16): for independent samples E[(A - B)^2] / 4 = (sigma^2 / 8) / 2 = sigma^2 / 16, unbiased.
+// Its sd over the pixels: with D = (A - B) / 2, Var(D^2) = 2 V^2 + kappa4(D), V = sigma^2 / 16 and
+// kappa4(D) = kappa4(f) / 16^3 (D is a sum of 16 samples over 16).
+TEST(PixelStatistics, IndependentSamplesGiveAnUnbiasedVarianceOfTheMeanFromTheHalves) {
+    std::vector<double> means;
+    const Film film = synthetic_film(SamplerType::kIndependent, 11, means);
+    const double truth = kVariance / kSpp;
+    const double kappa4 = kFourthMoment - 3.0 * kVariance * kVariance;
+    const double sd = std::sqrt((2.0 * truth * truth + kappa4 / (kSpp * kSpp * kSpp)) / double(kSide * kSide));
+    EXPECT_NEAR(average(halves_estimates(film)), truth, 4.0 * sd);
+}
+
+// For Owen-scrambled Sobol samples each half is a scrambled 8-point net, as good as the first
+// (in the first dimension both put one point in each eighth), so Var(A) = Var(B) = V8, and
+// V16 = (2 V8 + 2 Cov(A, B)) / 4; then E[(A - B)^2] / 4 = V8 - V16, exactly. V8 and V16 are
+// measured from the spread of the first halves' and the whole means across pixels. With the
+// net's fast convergence that is far below the squares' estimate (which stays at Monte Carlo's
+// sigma^2 / 16) and above V16 (conservative): the reason the image's estimate uses the halves.
+TEST(PixelStatistics, SobolSamplesGiveACloseConservativeVarianceOfTheMeanFromTheHalves) {
+    std::vector<double> means;
+    const Film film = synthetic_film(SamplerType::kSobol, 11, means);
+    const double v16 = spread_of_means(means), v8 = spread_of_means(first_half_means(film));
+    const std::vector<double> e = halves_estimates(film);
+    const double estimate = average(e);
+    // Bound: 4 sd of the estimate's average (its spread across pixels over sqrt(pixels)) and of
+    // the two spreads (relative sd about sqrt(2 / pixels) each, as for near-normal means).
+    double spread = 0.0;
+    for (double x : e) spread += (x - estimate) * (x - estimate);
+    const double pixels = double(kSide * kSide);
+    const double se = std::sqrt(spread / (pixels - 1.0) / pixels);
+    const double bound = 4.0 * std::sqrt(se * se + 2.0 / pixels * (v8 * v8 + v16 * v16));
+    EXPECT_NEAR(estimate, v8 - v16, bound);
+    EXPECT_GT(estimate, v16);
+    EXPECT_LT(estimate, 0.2 * mean_estimate(film));
+}
+
 TEST(PixelStatistics, RelativeVarianceAndRelmseFollowTheBenchmarkDefinition) {
     Film film(2, 1, false, {}, true);
     for (const float value : {1.0f, 3.0f}) {  // pixel 0: samples 1 and 3
         add_to_sum(film.sum(0, 0), Rgb(value, value, value));
         add_square_to_sum(film.squares(0, 0), Rgb(value, value, value));
         film.count(0, 0) += 1.0;
+        film.prefix_sums(0, 0).after_sample(uint32_t(film.count(0, 0)) - 1, film.sum(0, 0), film.count(0, 0));
     }
-    // Mean 2, sample variance 2, variance of the mean 1; relMSE term 1 / (4 + 0.01).
+    // Mean 2, sample variance 2, variance of the mean 1; relMSE term 1 / (4 + 0.01). From the
+    // halves (1 and 3): (1 - 3)^2 / 4 = 1 too.
     EXPECT_DOUBLE_EQ(variance_of_mean(film, 0, 0)[0], 1.0);
+    EXPECT_DOUBLE_EQ(variance_of_mean_from_halves(film, 0, 0)[0], 1.0);
     EXPECT_DOUBLE_EQ(relative_variance(film, 0, 0), 1.0 / 4.01);
+    EXPECT_DOUBLE_EQ(relative_variance_from_halves(film, 0, 0), 1.0 / 4.01);
+    // A third sample, 2: the halves are still those of the first two (the last power of two), the
+    // estimate scaled to three samples: 1 * 2 / 3.
+    add_to_sum(film.sum(0, 0), Rgb(2.0f, 2.0f, 2.0f));
+    add_square_to_sum(film.squares(0, 0), Rgb(2.0f, 2.0f, 2.0f));
+    film.count(0, 0) += 1.0;
+    film.prefix_sums(0, 0).after_sample(2, film.sum(0, 0), film.count(0, 0));
+    EXPECT_DOUBLE_EQ(variance_of_mean_from_halves(film, 0, 0)[0], 2.0 / 3.0);
+    EXPECT_DOUBLE_EQ(variance_of_mean(film, 0, 0)[0], 1.0 / 3.0);  // sample variance 1, over 3
     EXPECT_TRUE(std::isinf(relative_variance(film, 1, 0)));  // no samples yet
     EXPECT_TRUE(std::isinf(estimated_relmse(film)));
-    EXPECT_DOUBLE_EQ(estimated_relmse(film, {PixelBounds{0, 0, 1, 1}}), 1.0 / 4.01);
+    EXPECT_DOUBLE_EQ(estimated_relmse(film, {PixelBounds{0, 0, 1, 1}}), 2.0 / 3.0 / 4.01);  // from the halves
     const SppSummary spp = spp_summary(film);
     EXPECT_EQ(spp.min, 0.0);
-    EXPECT_EQ(spp.max, 2.0);
-    EXPECT_EQ(spp.mean, 1.0);
-    EXPECT_EQ(spp_image(film).pixels[0].r, 2.0f);
-    EXPECT_EQ(variance_image(film).pixels[0].g, 1.0f);
+    EXPECT_EQ(spp.max, 3.0);
+    EXPECT_EQ(spp.mean, 1.5);
+    EXPECT_EQ(spp_image(film).pixels[0].r, 3.0f);
+    EXPECT_EQ(variance_image(film).pixels[0].g, float(1.0 / 3.0));
 }
 
 // The statistics travel with the film's values (what checkpoints, shard parts and MPI carry).
 TEST(PixelStatistics, RegionsCarryTheStatistics) {
     Film film(3, 2, true, {}, true);
-    EXPECT_EQ(film.values_per_pixel(), 8);
-    EXPECT_EQ(Film(3, 2, false, {}, true).values_per_pixel(), 7);
+    EXPECT_EQ(film.values_per_pixel(), 17);
+    EXPECT_EQ(Film(3, 2, false, {}, true).values_per_pixel(), 16);
     EXPECT_EQ(Film(3, 2).values_per_pixel(), 3);
     film.sum(2, 1) = {1, 2, 3};
     film.weight(2, 1) = 4;
     film.squares(2, 1) = {5, 6, 7};
     film.count(2, 1) = 8;
-    std::vector<double> values(8);
+    film.rays(2, 1) = 9;
+    film.prefix_sums(2, 1) = PrefixSums{{PixelSum{10, 11, 12}, PixelSum{13, 14, 15}}, {16, 17}};
+    std::vector<double> values(17);
     film.read_region(PixelBounds{2, 1, 3, 2}, values.data());
-    EXPECT_EQ(values, (std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8}));
+    EXPECT_EQ(values, (std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17}));
     Film copy(3, 2, true, {}, true);
     copy.write_region(PixelBounds{2, 1, 3, 2}, values.data());
     EXPECT_EQ(copy.squares(2, 1), film.squares(2, 1));
     EXPECT_EQ(copy.count(2, 1), 8.0);
+    EXPECT_EQ(copy.rays(2, 1), 9.0);
+    EXPECT_EQ(copy.prefix_sums(2, 1).sum[1], film.prefix_sums(2, 1).sum[1]);
+    EXPECT_EQ(copy.prefix_sums(2, 1).weight[1], 17.0);
 }
 
 }  // namespace

@@ -91,6 +91,43 @@ TEST_P(AdaptiveDeterminism, ShardsPutTogetherAreTheWholeRender) {
     EXPECT_TRUE(same_bits(merged, whole.state.film));
 }
 
+// --target-error's allocation (render/error_allocation.h) is decided from the whole film at
+// decision points, and handed to every tile: the same bits for threads, tiles, passes and resume.
+TEST_P(AdaptiveDeterminism, TargetAllocationSameBitsForThreadsTilesPassesAndResume) {
+    Scene scene = adaptive_scene(GetParam());
+    scene.sampler.adaptive.reset();
+    scene.sampler.spp = 512;
+    constexpr double kTarget = 1e-3;
+    const RenderResult reference = render(scene, {.threads = 2, .target_error = kTarget});
+    const SppSummary spp = spp_summary(reference.state.film);
+    std::printf("target %g: spp mean %.1f min %g max %g, estimate %g\n", kTarget, spp.mean, spp.min, spp.max,
+                *reference.stats.relmse_estimate);
+    // The allocation stopped some blocks before others, and the target was met.
+    ASSERT_TRUE(reference.stats.converged);
+    ASSERT_LT(spp.min, spp.max);
+
+    for (int threads : {1, 3})
+        for (int tile_size : {5, 24})
+            for (uint32_t pass_spp : {0u, 7u}) {
+                SCOPED_TRACE(::testing::Message() << threads << " threads, tiles " << tile_size << ", passes " << pass_spp);
+                const RenderResult r = render(
+                    scene, {.threads = threads, .tile_size = tile_size, .pass_spp = pass_spp, .target_error = kTarget});
+                EXPECT_TRUE(same_bits(r.state.film, reference.state.film));
+            }
+    for (int k : {2, 9, 20}) {
+        SCOPED_TRACE(::testing::Message() << "stopped after " << k << " passes");
+        int passes = 0;
+        RenderOptions first{.threads = 1, .pass_spp = 3, .target_error = kTarget};
+        first.on_pass = [&passes](const RenderState&) { ++passes; };
+        first.stop = [&passes, k] { return passes >= k; };
+        RenderResult stopped = render(scene, first);
+        ASSERT_EQ(stopped.end, RenderEnd::kStopped);
+        const RenderResult resumed =
+            render(scene, {.threads = 3, .pass_spp = 5, .target_error = kTarget}, std::move(stopped.state));
+        EXPECT_TRUE(same_bits(resumed.state.film, reference.state.film));
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Samplers, AdaptiveDeterminism,
                          ::testing::Values(SamplerType::kIndependent, SamplerType::kSobol));
 
@@ -129,16 +166,9 @@ double aggregate_z(const Film& a, const Film& b) {
     return difference / std::sqrt(variance);
 }
 
-TEST(AdaptiveSampling, ConvergesToTheUniformImage) {
-    Scene adaptive = test::cornell_glass_scene(32, 32, 512);
-    adaptive.sampler.type = SamplerType::kIndependent;
-    adaptive.sampler.adaptive = AdaptiveSettings{0.1f, 16};
-    adaptive.sampler.seed = 11;
-    Scene uniform = adaptive;
-    uniform.sampler.adaptive.reset();
-    uniform.sampler.seed = 12;
-    uniform.sampler.spp = 256;
-    const RenderResult a = render(adaptive, {});
+// `a` (an adaptive render of `uniform` with another seed) has the uniform render's expectation,
+// pixel by pixel and in aggregate; and the controls, 3% and 30% more light, are seen as different.
+void expect_same_expectation(const RenderResult& a, const Scene& uniform) {
     const RenderResult u = render(uniform, {.statistics = true});
     const SppSummary spp = spp_summary(a.state.film);
     ASSERT_LT(spp.min, spp.max);  // it adapted
@@ -160,15 +190,48 @@ TEST(AdaptiveSampling, ConvergesToTheUniformImage) {
     }
 }
 
+Scene glass_box_for_convergence() {
+    Scene s = test::cornell_glass_scene(32, 32, 512);
+    s.sampler.type = SamplerType::kIndependent;
+    s.sampler.seed = 11;
+    return s;
+}
+
+Scene uniform_reference_of(const Scene& adaptive) {
+    Scene uniform = adaptive;
+    uniform.sampler.adaptive.reset();
+    uniform.sampler.seed = 12;
+    uniform.sampler.spp = 256;
+    return uniform;
+}
+
+TEST(AdaptiveSampling, ConvergesToTheUniformImage) {
+    Scene adaptive = glass_box_for_convergence();
+    adaptive.sampler.adaptive = AdaptiveSettings{0.1f, 16};
+    expect_same_expectation(render(adaptive, {}), uniform_reference_of(adaptive));
+}
+
+// Blocks that --target-error's allocation stops early keep an unbiased mean too.
+TEST(TargetError, AllocationConvergesToTheUniformImage) {
+    const Scene scene = glass_box_for_convergence();
+    const RenderResult a = render(scene, {.target_error = 5e-3});
+    ASSERT_TRUE(a.stats.converged);
+    expect_same_expectation(a, uniform_reference_of(scene));
+}
+
 // The relMSE of `test` against `reference`, less the reference's own estimated relMSE (its noise
 // adds to the difference's).
 double true_relmse(const RenderResult& test, const RenderResult& reference) {
     return bench::relmse(test.image, reference.image) - estimated_relmse(reference.state.film);
 }
 
-TEST(TargetError, StopsWhenTheEstimateSaysAndTheTrueErrorAgrees) {
+// With both samplers: for Sobol samples the image's estimate comes from the halves of each pixel's
+// last power of two (film/pixel_statistics.h), which keeps it within 2x of the truth.
+class TargetErrorSampler : public ::testing::TestWithParam<SamplerType> {};
+
+TEST_P(TargetErrorSampler, StopsWhenTheEstimateSaysAndTheTrueErrorAgrees) {
     Scene scene = test::cornell_box_scene(24, 24, 4096);
-    scene.sampler.type = SamplerType::kIndependent;
+    scene.sampler.type = GetParam();
     constexpr double kTarget = 2e-3;
     std::vector<std::pair<uint32_t, double>> estimates;  // at each decision point
     RenderOptions options{.target_error = kTarget};
@@ -197,6 +260,8 @@ TEST(TargetError, StopsWhenTheEstimateSaysAndTheTrueErrorAgrees) {
     EXPECT_GT(truth, 0.5 * *r.stats.relmse_estimate);
     EXPECT_LT(truth, 2.0 * *r.stats.relmse_estimate);
 }
+
+INSTANTIATE_TEST_SUITE_P(Samplers, TargetErrorSampler, ::testing::Values(SamplerType::kIndependent, SamplerType::kSobol));
 
 // The variance and spp AOV layers (film/aov_layers.h) come from the film's statistics: with or
 // without adaptive sampling, named as the issue says, equal to the film's own estimates.

@@ -280,8 +280,9 @@ TEST(Checkpoint, StatisticsAndAdaptiveSettingsRoundTripInVersionFour) {
     write_checkpoint(file, adaptive_identity(), s);
     const std::string bytes = read_bytes(file);
     EXPECT_EQ(bytes[8], 4);
-    // The header with the film's values and the adaptive settings, 8 values a pixel, the checksum.
-    EXPECT_EQ(bytes.size(), kHeaderBytes + 12 + 15 * 8 * 8 + 8);
+    // The header with the film's values and the adaptive settings, 17 values a pixel (sums, weight
+    // sum, 13 statistics), the checksum.
+    EXPECT_EQ(bytes.size(), kHeaderBytes + 12 + 15 * 17 * 8 + 8);
     const Checkpoint c = read_checkpoint(file);
     ASSERT_TRUE(c.state.film.has_statistics());
     ASSERT_TRUE(c.state.film.weighted());
@@ -319,6 +320,21 @@ TEST(Checkpoint, EveryCorruptByteOfVersionFourIsAClearError) {
             EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << at << ": " << message;
         }
     }
+}
+
+// The first builds with statistics kept 4 values per pixel and did not set the film-values word's
+// bit 2; this build's decisions read the rays and prefix sums those lack, so such a checkpoint is
+// refused with the reason (its length would not match anyway).
+TEST(Checkpoint, StatisticsWithoutRaysAndPrefixSumsAreRefusedClearly) {
+    const fs::path file = temp_file("old-statistics.ckpt");
+    write_checkpoint(file, adaptive_identity(), statistics_state());
+    std::string bytes = read_bytes(file);
+    ASSERT_EQ(bytes[kHeaderBytes] & 6, 6);  // statistics, with rays and prefix sums
+    bytes[kHeaderBytes] = char(bytes[kHeaderBytes] & ~4);
+    write_bytes(file, bytes);
+    EXPECT_NE(error_of([&] { read_checkpoint(file); }).find("by an earlier build of candela, whose per-pixel "
+                                                            "statistics lack the rays and prefix sums"),
+              std::string::npos);
 }
 
 TEST(Checkpoint, WeightSumsRoundTripInVersionTwo) {

@@ -4,10 +4,11 @@
 #include <sched.h>
 
 #include <algorithm>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <deque>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -25,6 +26,7 @@
 #include "candela/render/frame_renderer.h"
 #include "candela/film/pixel_statistics.h"
 #include "candela/render/adaptive_sampling.h"
+#include "candela/render/error_allocation.h"
 #include "candela/render/pass_schedule.h"
 #include "candela/render/progress.h"
 #include "candela/scene/scene.h"
@@ -65,10 +67,12 @@ class RootRender {
                const MpiRenderOptions& options, RenderState start)
         : session_(session), frame_(frame), options_(options), spp_(uint32_t(scene.sampler.spp)),
           adaptive_(scene.sampler.adaptive),
-          first_decision_(adaptive_ ? uint32_t(adaptive_->min_spp) : kFirstTargetCheck),
-          tiles_(render_tiles(frame.width(), frame.height(), options.render, adaptive_.has_value())),
+          target_(options.render.target_error > 0.0),
+          first_decision_(first_decision_point(adaptive_)),
+          tiles_(render_tiles(frame.width(), frame.height(), options.render, adaptive_ || target_)),
           scheduler_(int(tiles_.size()), session.size(), start.samples_done == 0) {
         state_ = std::move(start);
+        if (target_) target_scale_ = std::numeric_limits<double>::infinity();
         start_samples_ = state_.samples_done;
         start_dropped_ = state_.dropped_samples;
         for (const Tile& tile : tiles_) {
@@ -87,7 +91,7 @@ class RootRender {
             std::vector<TileTally> tallies(static_cast<size_t>(threads));
             std::vector<std::thread> workers;
             for (int i = 0; i < threads; ++i) workers.emplace_back([this, &tally = tallies[size_t(i)]] { render_locally(tally); });
-            if (adaptive_) {
+            if (adaptive_ || target_) {
                 std::lock_guard lock(mutex_);
                 update_active();  // a resumed render's blocks may have stopped
             }
@@ -142,9 +146,10 @@ class RootRender {
             const int tile_index = scheduler_.take(0, 1).front().tile;
             const Tile tile = tiles_[size_t(tile_index)];
             const uint32_t begin = pass_begin_, end = pass_end_;
+            const std::optional<double> target_scale = target_scale_;
             lock.unlock();
             const uint64_t rays_before = tally.rays.total(), dropped_before = tally.dropped;
-            frame_.render_tile(tile, begin, end, state_.film, next_, tally);
+            frame_.render_tile(tile, begin, end, state_.film, next_, tally, target_scale);
             progress_->advance(sampled_pixels(size_t(tile_index)) * (end - begin), tally.rays.total() - rays_before);
             lock.lock();
             pass_dropped_ += tally.dropped - dropped_before;
@@ -193,7 +198,7 @@ class RootRender {
         // Passes end at the decision points of adaptive sampling and of a target error, as in
         // render(): the decisions are made from the state there, so they are the same.
         uint32_t remaining = spp_ - state_.samples_done;
-        if (adaptive_ || options_.render.target_error > 0.0)
+        if (adaptive_ || target_)
             remaining = std::min(remaining, next_decision_point(state_.samples_done, first_decision_) - state_.samples_done);
         const uint32_t n = next_pass_spp(previous_, remaining, options_.render.pass_seconds, seconds_left,
                                          options_.render.pass_spp);
@@ -218,28 +223,33 @@ class RootRender {
     }
 
     // At a pass boundary, for a film with statistics (mutex_ held): whether the render is done
-    // because every pixel stopped (adaptive sampling) or the estimated relMSE met the target, as
-    // render() decides it; also the estimate, for the progress bar and the summary.
+    // because every pixel stopped or the estimated relMSE met the target, as render() decides it,
+    // else the target's allocation scale for the passes to the next decision point; also the
+    // estimate, for the progress bar and the summary.
     bool converged() {
         if (!state_.film.has_statistics() || state_.samples_done == 0) return false;
         relmse_estimate_ = estimated_relmse(state_.film, regions_);
         progress_->set_note(fmt::format("relMSE ~{:.3g}", *relmse_estimate_));
         if (!is_decision_point(state_.samples_done, first_decision_)) return false;
-        if (options_.render.target_error > 0.0 && *relmse_estimate_ <= options_.render.target_error)
+        if (target_ && *relmse_estimate_ <= options_.render.target_error) {
             converged_ = true;
-        else if (adaptive_ && update_active() == 0)
-            converged_ = true;
+            return converged_;
+        }
+        if (target_)
+            target_scale_ =
+                target_allocation_scale(state_.film, tiles_, state_.samples_done, options_.render.target_error);
+        if ((adaptive_ || target_) && update_active() == 0) converged_ = true;
         return converged_;
     }
 
-    // Adaptive sampling, at a decision point (or the start): each tile's pixels that take samples
+    // Adaptive sampling or a target, at a decision point (or the start): each tile's pixels that take samples
     // until the next one, for the progress bar, which then counts them only (as render() does).
     uint64_t update_active() {
         tile_active_.assign(tiles_.size(), 0);
         uint64_t active = 0;
         for (size_t t = 0; t < tiles_.size(); ++t) {
             for (const PixelBounds& block : tile_blocks(tiles_[t]))
-                if (block_active(state_.film, block, state_.samples_done, *adaptive_))
+                if (block_active(state_.film, block, state_.samples_done, adaptive_, target_scale_))
                     tile_active_[t] += uint64_t(block.width()) * uint64_t(block.height());
             active += tile_active_[t];
         }
@@ -275,6 +285,8 @@ class RootRender {
         w.u32(pass_id_);
         w.u32(pass_begin_);
         w.u32(pass_end_);
+        w.u8(target_scale_ ? 1 : 0);
+        w.f64(target_scale_.value_or(0.0));
         w.u32(uint32_t(tiles.size()));
         for (const TileScheduler::Assignment& a : tiles) {
             w.u32(uint32_t(a.tile));
@@ -357,12 +369,14 @@ class RootRender {
     const MpiRenderOptions& options_;
     const uint32_t spp_;
     const std::optional<AdaptiveSettings> adaptive_;
+    const bool target_;  // --target-error
     const uint32_t first_decision_;  // adaptive sampling's or a target's first decision point
     const std::vector<Tile> tiles_;
     uint64_t pixels_ = 0;                // that the tiles cover
     std::vector<PixelBounds> regions_;   // the tiles', for the film's reductions
     double samples_before_ = 0;          // films with statistics: the samples the start state had
     std::optional<double> relmse_estimate_;
+    std::optional<double> target_scale_;  // --target-error's allocation scale, at the last decision point
     bool converged_ = false;
     std::vector<uint64_t> tile_active_;  // adaptive sampling: see update_active
     MpiChannel channel_;
@@ -403,7 +417,8 @@ class WorkerRender {
     WorkerRender(const MpiSession& session, const FrameRenderer& frame, const Scene& scene,
                  const MpiRenderOptions& options)
         : session_(session), frame_(frame), options_(options),
-          tiles_(render_tiles(frame.width(), frame.height(), options.render, scene.sampler.adaptive.has_value())),
+          tiles_(render_tiles(frame.width(), frame.height(), options.render,
+                              scene.sampler.adaptive.has_value() || options.render.target_error > 0.0)),
           film_(frame.width(), frame.height(), frame.weighted(), frame.aovs(), needs_statistics(scene, options.render)),
           threads_(threads_for(session, options.render)) {}
 
@@ -472,6 +487,7 @@ class WorkerRender {
     struct Job {
         int tile;
         uint32_t pass, begin, end;
+        std::optional<double> target_scale;
     };
     struct Done {
         Job job;
@@ -492,7 +508,7 @@ class WorkerRender {
             const TileTally before = tally;
             const Tile& tile = tiles_[size_t(job.tile)];
             const Clock::time_point start = Clock::now();
-            frame_.render_tile(tile, job.begin, job.end, film_, film_, tally);
+            frame_.render_tile(tile, job.begin, job.end, film_, film_, tally, job.target_scale);
             const double per_sample = seconds_since(start) / (double(tile.pixels()) * double(job.end - job.begin));
             RayCounters rays = tally.rays;
             rays.camera -= before.rays.camera;
@@ -531,7 +547,12 @@ class WorkerRender {
             return code;
         }
         if (type != TileMessageType::kAssign) protocol_error("unexpected message from rank 0");
-        const uint32_t pass = r.u32(), begin = r.u32(), end = r.u32(), count = r.u32();
+        const uint32_t pass = r.u32(), begin = r.u32(), end = r.u32();
+        const bool has_scale = r.u8() != 0;
+        const double scale = r.f64();
+        const uint32_t count = r.u32();
+        if (has_scale && !(scale >= 0.0)) protocol_error("assignment");
+        const std::optional<double> target_scale = has_scale ? std::optional<double>(scale) : std::nullopt;
         std::vector<Job> jobs;
         for (uint32_t i = 0; i < count && !r.failed(); ++i) {
             const uint32_t tile_index = r.u32();
@@ -543,7 +564,7 @@ class WorkerRender {
                 if (!r.doubles(scratch_.data(), scratch_.size())) protocol_error("assignment values");
                 film_.write_region(tile.bounds(), scratch_.data());
             }
-            jobs.push_back({int(tile_index), pass, begin, end});
+            jobs.push_back({int(tile_index), pass, begin, end, target_scale});
         }
         if (r.failed() || !r.at_end()) protocol_error("assignment");
         {

@@ -42,5 +42,6 @@ template uint8_t MessageReader::get<uint8_t>();
 template uint32_t MessageReader::get<uint32_t>();
 template int32_t MessageReader::get<int32_t>();
 template uint64_t MessageReader::get<uint64_t>();
+template double MessageReader::get<double>();
 
 }  // namespace candela

@@ -14,7 +14,8 @@
 //   stop     u8 kStop, i32 signal: this rank received SIGINT or SIGTERM
 //   bye      u8 kBye, u64 x 3 rays traced by the rank in all (the summary line's count)
 // Rank 0 to a worker:
-//   assign   u8 kAssign, u32 pass, u32 first sample, u32 end sample, u32 count, then per tile:
+//   assign   u8 kAssign, u32 pass, u32 first sample, u32 end sample, u8 has target scale, f64 the
+//            scale (--target-error's allocation, render/error_allocation.h), u32 count, then per tile:
 //            u32 tile, u8 has values, [f64 x values: the tile's start values]
 //   end      u8 kEnd, i32 exit code: stop rendering, say bye, exit with this code
 #include <cstdint>
@@ -36,6 +37,7 @@ class MessageWriter {
     void u32(uint32_t v) { put(&v, 4); }
     void i32(int32_t v) { put(&v, 4); }
     void u64(uint64_t v) { put(&v, 8); }
+    void f64(double v) { put(&v, 8); }
     void rays(const RayCounters& r) {
         u64(r.camera);
         u64(r.bounce);
@@ -58,6 +60,7 @@ class MessageReader {
     uint32_t u32() { return get<uint32_t>(); }
     int32_t i32() { return get<int32_t>(); }
     uint64_t u64() { return get<uint64_t>(); }
+    double f64() { return get<double>(); }
     RayCounters rays() {
         RayCounters r;
         r.camera = u64();

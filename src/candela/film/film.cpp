@@ -12,7 +12,8 @@ Film::Film(int width, int height, bool weighted, AovLayers aovs, bool statistics
     : width_(width), height_(height), sums_(size_t(width) * size_t(height), {0.0, 0.0, 0.0}),
       weights_(weighted ? sums_.size() : 0, 0.0), weighted_(weighted), aovs_(aovs), aov_values_(aovs.value_count()),
       aov_sums_(sums_.size() * size_t(aov_values_), 0.0), statistics_(statistics),
-      squares_(statistics ? sums_.size() : 0, {0.0, 0.0, 0.0}), counts_(statistics ? sums_.size() : 0, 0.0) {}
+      squares_(statistics ? sums_.size() : 0, {0.0, 0.0, 0.0}), counts_(statistics ? sums_.size() : 0, 0.0),
+      rays_(statistics ? sums_.size() : 0, 0.0), prefixes_(statistics ? sums_.size() : 0) {}
 
 Film::Film(int width, int height, std::vector<PixelSum> sums, std::vector<double> weights)
     : width_(width), height_(height), sums_(std::move(sums)), weights_(std::move(weights)), weighted_(!weights_.empty()) {
@@ -30,6 +31,10 @@ void Film::read_region(const PixelBounds& region, double* out) const {
             if (statistics_) {
                 for (double v : squares_[i]) *out++ = v;
                 *out++ = counts_[i];
+                *out++ = rays_[i];
+                for (const PixelSum& p : prefixes_[i].sum)
+                    for (double v : p) *out++ = v;
+                for (double v : prefixes_[i].weight) *out++ = v;
             }
         }
 }
@@ -44,6 +49,10 @@ void Film::write_region(const PixelBounds& region, const double* in) {
             if (statistics_) {
                 for (double& v : squares_[i]) v = *in++;
                 counts_[i] = *in++;
+                rays_[i] = *in++;
+                for (PixelSum& p : prefixes_[i].sum)
+                    for (double& v : p) v = *in++;
+                for (double& v : prefixes_[i].weight) v = *in++;
             }
         }
 }

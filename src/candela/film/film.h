@@ -13,10 +13,13 @@
 // resolve exactly like the beauty image. Films without AOVs allocate nothing for them.
 //
 // A film with statistics (adaptive sampling, a noise target, the variance and spp outputs) also
-// keeps per pixel the sum of its sample values' squares (r, g, b) and its sample count: what the
-// per-pixel variance of the mean needs (film/pixel_statistics.h), and the count because adaptive
-// sampling gives pixels different numbers of samples. That is 4 more doubles (32 bytes) per
-// pixel, only for such films: others keep their memory, speed and bits.
+// keeps per pixel the sum of its sample values' squares (r, g, b), its sample count, the rays its
+// samples traced, and its sums (and weight sums) at the last two powers of two of its sample count:
+// what the per-pixel variance of the mean needs (film/pixel_statistics.h: from the squares, and
+// from the two halves of the last power of two, which works for Sobol samples too), the count
+// because adaptive sampling gives pixels different numbers of samples, and the rays as the pixel's
+// work, which --target-error's allocation weighs (render/error_allocation.h). That is 13 more
+// doubles (104 bytes) per pixel, only for such films: others keep their memory, speed and bits.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -61,6 +64,24 @@ inline void add_weighted_to_sum(PixelSum& sum, const Rgb& value, float weight) {
     sum[1] += double(value.g) * w;
     sum[2] += double(value.b) * w;
 }
+
+// A pixel's sums (and weight sums, for a weighted film) over its first 2^(m-1) and first 2^m
+// samples, 2^m the largest power of two at most its count (both 0 before the first sample; with
+// one sample the first is 0): the two halves of a Sobol net (film/pixel_statistics.h).
+struct PrefixSums {
+    std::array<PixelSum, 2> sum{};
+    std::array<double, 2> weight{};
+    // Called after sample `index` (0-based) was added to `sum` (and `weight_sum`): when index + 1
+    // is a power of two, the sums so far become the last power of two's.
+    void after_sample(uint32_t index, const PixelSum& running, double running_weight) {
+        const uint32_t n = index + 1;
+        if ((n & (n - 1)) != 0) return;
+        sum[0] = sum[1];
+        weight[0] = weight[1];
+        sum[1] = running;
+        weight[1] = running_weight;
+    }
+};
 
 // One camera sample's AOV values (render/aov_tracer.h): what the film sums for the AOV layers.
 struct AovSample {
@@ -115,11 +136,20 @@ class Film {
     const PixelSum& squares(int x, int y) const { return squares_[index(x, y)]; }
     double& count(int x, int y) { return counts_[index(x, y)]; }
     double count(int x, int y) const { return counts_[index(x, y)]; }
+    // The rays (camera, bounce, shadow) that pixel (x, y)'s samples traced; films with statistics
+    // only. A count of work, not of time, so that decisions made from it are deterministic.
+    double& rays(int x, int y) { return rays_[index(x, y)]; }
+    double rays(int x, int y) const { return rays_[index(x, y)]; }
+    // The sums at the last two powers of two of the sample count; films with statistics only.
+    PrefixSums& prefix_sums(int x, int y) { return prefixes_[index(x, y)]; }
+    const PrefixSums& prefix_sums(int x, int y) const { return prefixes_[index(x, y)]; }
 
     // The doubles the film keeps per pixel: the three sums, the weight sum for a weighted film,
-    // the AOV sums, then for a film with statistics the three sums of squares and the sample
-    // count. What checkpoints, shard parts and MPI messages carry for each pixel.
-    int values_per_pixel() const { return (weighted_ ? 4 : 3) + aov_values_ + (statistics_ ? 4 : 0); }
+    // the AOV sums, then for a film with statistics the three sums of squares, the sample count,
+    // the rays and the prefix sums (sums then weight sums). What checkpoints, shard parts and MPI
+    // messages carry for each pixel.
+    int values_per_pixel() const { return (weighted_ ? 4 : 3) + aov_values_ + (statistics_ ? kStatisticsValues : 0); }
+    static constexpr int kStatisticsValues = 13;
     // Copies the values of the pixels in `region` (row-major, values_per_pixel() each) to `out`,
     // which has room for region.width() * region.height() * values_per_pixel() doubles; and back.
     void read_region(const PixelBounds& region, double* out) const;
@@ -148,6 +178,8 @@ class Film {
     bool statistics_ = false;
     std::vector<PixelSum> squares_;  // with statistics only
     std::vector<double> counts_;     // with statistics only
+    std::vector<double> rays_;       // with statistics only
+    std::vector<PrefixSums> prefixes_;  // with statistics only
 };
 
 }  // namespace candela

@@ -1,6 +1,7 @@
 #include "candela/film/pixel_statistics.h"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 
 #include "candela/core/check.h"
@@ -49,10 +50,28 @@ PixelSum variance_of_mean(const Film& film, int x, int y) {
     return v;
 }
 
-double relative_variance(const Film& film, int x, int y) {
+PixelSum variance_of_mean_from_halves(const Film& film, int x, int y) {
+    CANDELA_CHECK(film.has_statistics());
     const double n = film.count(x, y);
-    if (n < 2.0) return std::numeric_limits<double>::infinity();
-    const PixelSum v = variance_of_mean(film, x, y);
+    if (n < 2.0) return {0.0, 0.0, 0.0};
+    const PrefixSums& p = film.prefix_sums(x, y);
+    const double first_weight = p.weight[0], second_weight = p.weight[1] - p.weight[0];
+    // A weighted pixel whose samples in one half all had weight 0 has no mean there.
+    if (!(first_weight > 0.0 && second_weight > 0.0)) return {0.0, 0.0, 0.0};
+    const double power = std::bit_floor(uint64_t(n));
+    PixelSum v{};
+    for (size_t c = 0; c < 3; ++c) {
+        const double a = p.sum[0][c] / first_weight, b = (p.sum[1][c] - p.sum[0][c]) / second_weight;
+        v[c] = (a - b) * (a - b) / 4.0 * (power / n);
+    }
+    return v;
+}
+
+namespace {
+
+// The mean over r, g, b of a variance of the mean over (value^2 + kRelativeErrorEpsilon).
+double relative(const Film& film, int x, int y, const PixelSum& v) {
+    const double n = film.count(x, y);
     const PixelSum& sum = film.sum(x, y);
     const double to_value = value_scale(film, x, y) / n;
     double r = 0.0;
@@ -63,11 +82,23 @@ double relative_variance(const Film& film, int x, int y) {
     return r / 3.0;
 }
 
+}  // namespace
+
+double relative_variance(const Film& film, int x, int y) {
+    if (film.count(x, y) < 2.0) return std::numeric_limits<double>::infinity();
+    return relative(film, x, y, variance_of_mean(film, x, y));
+}
+
+double relative_variance_from_halves(const Film& film, int x, int y) {
+    if (film.count(x, y) < 2.0) return std::numeric_limits<double>::infinity();
+    return relative(film, x, y, variance_of_mean_from_halves(film, x, y));
+}
+
 double estimated_relmse(const Film& film, const std::vector<PixelBounds>& regions) {
     double total = 0.0;
     uint64_t pixels = 0;
     for_each_pixel(film, regions, [&](int x, int y) {
-        total += relative_variance(film, x, y);
+        total += relative_variance_from_halves(film, x, y);
         ++pixels;
     });
     return pixels > 0 ? total / double(pixels) : 0.0;

@@ -4,6 +4,7 @@
 
 #include "candela/film/film.h"
 #include "candela/film/pixel_statistics.h"
+#include "candela/render/error_allocation.h"
 
 namespace candela {
 
@@ -17,13 +18,16 @@ std::vector<PixelBounds> tile_blocks(const Tile& tile) {
     return blocks;
 }
 
-bool block_active(const Film& film, const PixelBounds& block, uint32_t begin, const AdaptiveSettings& settings) {
+bool block_active(const Film& film, const PixelBounds& block, uint32_t begin,
+                  const std::optional<AdaptiveSettings>& adaptive, std::optional<double> target_scale) {
     // Every pixel of a block has the same count: the block's decisions are its pixels'.
     if (film.count(block.x0, block.y0) != double(begin)) return false;
-    const auto min_spp = uint32_t(settings.min_spp);
-    if (begin < min_spp || !is_decision_point(begin, min_spp)) return true;
+    const uint32_t first = first_decision_point(adaptive);
+    if (begin < first || !is_decision_point(begin, first)) return true;
+    if (target_scale && !block_wants_samples(film, block, begin, *target_scale)) return false;
+    if (!adaptive) return true;
     // Relative error below the threshold: relative variance below its square.
-    const double limit = double(settings.threshold) * double(settings.threshold);
+    const double limit = double(adaptive->threshold) * double(adaptive->threshold);
     for (int y = block.y0; y < block.y1; ++y)
         for (int x = block.x0; x < block.x1; ++x)
             if (!(relative_variance(film, x, y) < limit)) return true;
@@ -31,11 +35,11 @@ bool block_active(const Film& film, const PixelBounds& block, uint32_t begin, co
 }
 
 uint64_t active_pixels(const Film& film, const std::vector<Tile>& tiles, uint32_t begin,
-                       const AdaptiveSettings& settings) {
+                       const std::optional<AdaptiveSettings>& adaptive, std::optional<double> target_scale) {
     uint64_t active = 0;
     for (const Tile& tile : tiles)
         for (const PixelBounds& block : tile_blocks(tile))
-            if (block_active(film, block, begin, settings)) active += uint64_t(block.width()) * uint64_t(block.height());
+            if (block_active(film, block, begin, adaptive, target_scale)) active += uint64_t(block.width()) * uint64_t(block.height());
     return active;
 }
 

@@ -13,9 +13,12 @@
 // tiles are multiples of the block size and aligned to it (adaptive_tile_size).
 //
 // --target-error uses the same points: the render stops at the first one where the image's
-// estimated relMSE is at most the target.
+// estimated relMSE is at most the target, and at each one blocks stop by its allocation
+// (render/error_allocation.h), whose one number, the scale K, the renderer holding the whole
+// film computes and hands to every tile of the pass.
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "candela/film/film_settings.h"
@@ -29,6 +32,11 @@ class Film;
 inline constexpr int kAdaptiveBlockSize = 8;
 // The first decision point when only --target-error asks for them.
 inline constexpr uint32_t kFirstTargetCheck = 16;
+
+// The first decision point: adaptive sampling's min_spp, else kFirstTargetCheck.
+inline uint32_t first_decision_point(const std::optional<AdaptiveSettings>& adaptive) {
+    return adaptive ? uint32_t(adaptive->min_spp) : kFirstTargetCheck;
+}
 
 // The decision point after decision point `point`: steps of an eighth of the count, at least 4,
 // so at most 12.5% of a pixel's samples are taken after it could have stopped.
@@ -58,11 +66,14 @@ std::vector<PixelBounds> tile_blocks(const Tile& tile);
 
 // Whether the block (of a film with statistics) takes samples from `begin` on: its pixels have
 // `begin` samples (else it stopped at an earlier decision point) and, when `begin` is a decision
-// point at or after min_spp, one of its pixels' relative error is at or above the threshold.
-bool block_active(const Film& film, const PixelBounds& block, uint32_t begin, const AdaptiveSettings& settings);
+// point (first_decision_point(adaptive) and after), with adaptive sampling one of its pixels'
+// relative error is at or above the threshold, and with --target-error (its allocation's scale at
+// this decision point, error_allocation.h) the allocation wants more samples in it.
+bool block_active(const Film& film, const PixelBounds& block, uint32_t begin,
+                  const std::optional<AdaptiveSettings>& adaptive, std::optional<double> target_scale = {});
 
 // The pixels of `tiles` that take samples from `begin` on.
 uint64_t active_pixels(const Film& film, const std::vector<Tile>& tiles, uint32_t begin,
-                       const AdaptiveSettings& settings);
+                       const std::optional<AdaptiveSettings>& adaptive, std::optional<double> target_scale = {});
 
 }  // namespace candela

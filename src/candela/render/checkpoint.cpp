@@ -61,7 +61,8 @@ void write_checkpoint(const fs::path& file, const RenderIdentity& identity, cons
                                           : kFormatVersion,
                         id, state.samples_done, state.dropped_samples);
     if (describes_values) {
-        w.u32((film.weighted() ? kWeightedFlag : 0u) | (film.has_statistics() ? kStatisticsFlag : 0u) |
+        w.u32((film.weighted() ? kWeightedFlag : 0u) |
+              (film.has_statistics() ? kStatisticsFlag | kStatisticsV2Flag : 0u) |
               (film.aovs().mask() << kAovFlagShift));
         w.u32(identity.adaptive ? uint32_t(identity.adaptive->min_spp) : 0u);
         w.u32(identity.adaptive ? std::bit_cast<uint32_t>(identity.adaptive->threshold) : 0u);
@@ -98,10 +99,16 @@ Checkpoint read_checkpoint(const fs::path& file) {
         const uint32_t values = r.u32(), min_spp = r.u32(), threshold_bits = r.u32();
         const uint32_t aov_mask = values >> kAovFlagShift;
         if (r.truncated()) fail(file, fmt::format("truncated checkpoint: {} bytes, the header alone is longer", size));
-        if ((values & ~(kWeightedFlag | kStatisticsFlag | (((1u << kAovLayerCount) - 1u) << kAovFlagShift))) != 0)
+        if ((values & ~(kWeightedFlag | kStatisticsFlag | kStatisticsV2Flag |
+                        (((1u << kAovLayerCount) - 1u) << kAovFlagShift))) != 0 ||
+            (values & kStatisticsV2Flag && !(values & kStatisticsFlag)))
             fail(file, fmt::format("corrupt checkpoint header: film values {:#x}", values));
         weighted = (values & kWeightedFlag) != 0;
         statistics = (values & kStatisticsFlag) != 0;
+        if (statistics && !(values & kStatisticsV2Flag))
+            fail(file, "a checkpoint of an adaptive or --target-error render by an earlier build of candela, whose "
+                       "per-pixel statistics lack the rays and prefix sums that this build's decisions read: it cannot be resumed "
+                       "here; render again, or resume it with the build that wrote it");
         for (int l = 0; l < kAovLayerCount; ++l)
             if ((aov_mask >> l) & 1u) aovs.add(AovLayer(l));
         if (min_spp != 0 || threshold_bits != 0) {
@@ -113,7 +120,7 @@ Checkpoint read_checkpoint(const fs::path& file) {
         }
     }
     // Film::values_per_pixel() of the film below, which is allocated only once the size is right.
-    const size_t bytes_per_pixel = size_t((weighted ? 4 : 3) + aovs.value_count() + (statistics ? 4 : 0)) * 8;
+    const size_t bytes_per_pixel = size_t((weighted ? 4 : 3) + aovs.value_count() + (statistics ? Film::kStatisticsValues : 0)) * 8;
     Checkpoint c;
     c.identity = h.identity;
     c.identity.aov_layers = aovs.mask();

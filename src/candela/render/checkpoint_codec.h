@@ -19,9 +19,12 @@ inline constexpr uint32_t kWeightedFormatVersion = 2;  // with weight sums
 inline constexpr uint32_t kPartFormatVersion = 3;      // a shard's part
 inline constexpr uint32_t kFilmValuesFormatVersion = 4;  // a film that describes its values (AOVs, statistics)
 // Version 4's film-values word (and a part file's film flags): bit 0 weight sums, bit 1 adaptive
-// sampling's statistics (film.h; checkpoints only), bits kAovFlagShift.. the AovLayers mask.
+// sampling's statistics (film.h; checkpoints only), bit 2 (checkpoints only, always with bit 1)
+// statistics with each pixel's rays and prefix sums (Film::kStatisticsValues = 13; the first
+// builds with statistics kept 4 values and did not set it), bits kAovFlagShift.. the AovLayers mask.
 inline constexpr uint32_t kWeightedFlag = 1u;
 inline constexpr uint32_t kStatisticsFlag = 2u;
+inline constexpr uint32_t kStatisticsV2Flag = 4u;
 inline constexpr uint32_t kAovFlagShift = 8;
 inline constexpr uint32_t kMaxString = 64;
 inline constexpr int kMaxSide = 32768;  // the scene loader's limit

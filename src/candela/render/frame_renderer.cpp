@@ -105,34 +105,43 @@ void render_pixels(const SampleContext& c, const CameraT& camera, const Tile& ti
 }
 
 // render_pixels for a film with statistics: also the sums of squares and the counts, and with
-// adaptive sampling only the tile's blocks that are still active (adaptive_sampling.h) take
-// samples; the others are copied. A separate function, so that films without statistics keep
+// adaptive sampling or --target-error only the tile's blocks that are still active
+// (adaptive_sampling.h) take samples; the others are copied. The rays each pixel's samples trace
+// are its work, which --target-error's allocation weighs. A separate function, so that films without statistics keep
 // their loop as it was.
 template <bool Weighted, bool WithAovs, CameraModel CameraT>
 void render_pixels_with_statistics(const SampleContext& c, const CameraT& camera, const Tile& tile, uint32_t begin,
-                                   uint32_t end, const Film& from, Film& to, TileTally& tally) {
+                                   uint32_t end, const Film& from, Film& to, TileTally& tally,
+                                   std::optional<double> target_scale) {
     for (const PixelBounds& block : tile_blocks(tile)) {
-        const bool active = !c.adaptive || block_active(from, block, begin, *c.adaptive);
+        const bool active = (!c.adaptive && !target_scale) || block_active(from, block, begin, c.adaptive, target_scale);
         for (int y = block.y0; y < block.y1; ++y) {
             for (int x = block.x0; x < block.x1; ++x) {
                 PixelSum sum = from.sum(x, y);
                 PixelSum squares = from.squares(x, y);
                 double weight_sum = Weighted ? from.weight(x, y) : 0.0;
-                double count = from.count(x, y);
+                double count = from.count(x, y), rays = from.rays(x, y);
+                PrefixSums prefixes = from.prefix_sums(x, y);
                 if constexpr (WithAovs)
                     if (&from != &to) std::copy_n(from.aov_sums(x, y), from.aovs().value_count(), to.aov_sums(x, y));
                 if (active) {
+                    const uint64_t rays_before = tally.rays.total();
                     const int full_x = x + c.bounds.x0, full_y = y + c.bounds.y0;
                     const PixelSampler pixel_sampler(c.sampler_type,
                                                      uint64_t(full_y) * uint64_t(c.width) + uint64_t(full_x), c.seed);
-                    for (uint32_t s = begin; s < end; ++s)
+                    for (uint32_t s = begin; s < end; ++s) {
                         take_sample<Weighted, WithAovs, true>(c, camera, full_x, full_y, s, pixel_sampler, sum,
                                                               weight_sum, tally, to, Vec2i(x, y), &squares);
+                        prefixes.after_sample(s, sum, Weighted ? weight_sum : double(s + 1));
+                    }
                     count += double(end - begin);
+                    rays += double(tally.rays.total() - rays_before);
                 }
                 to.sum(x, y) = sum;
                 to.squares(x, y) = squares;
                 to.count(x, y) = count;
+                to.rays(x, y) = rays;
+                to.prefix_sums(x, y) = prefixes;
                 if constexpr (Weighted) to.weight(x, y) = weight_sum;
             }
         }
@@ -181,15 +190,16 @@ bool FrameRenderer::weighted() const { return parts_->filter.weighted(); }
 AovLayers FrameRenderer::aovs() const { return parts_->aovs; }
 
 void FrameRenderer::render_tile(const Tile& tile, uint32_t begin, uint32_t end, const Film& from, Film& to,
-                                TileTally& tally) const {
+                                TileTally& tally, std::optional<double> target_scale) const {
     const Parts& p = *parts_;
     const bool aovs = p.aov_tracer.has_value();
     const bool statistics = from.has_statistics();
-    CANDELA_CHECK(to.has_statistics() == statistics && (statistics || !p.context.adaptive));
+    CANDELA_CHECK(to.has_statistics() == statistics && (statistics || (!p.context.adaptive && !target_scale)));
     auto run = [&](auto weighted, auto with_aovs) {
         visit([&](const auto& cam) {
             if (statistics)
-                render_pixels_with_statistics<weighted(), with_aovs()>(p.context, cam, tile, begin, end, from, to, tally);
+                render_pixels_with_statistics<weighted(), with_aovs()>(p.context, cam, tile, begin, end, from, to, tally,
+                                                                       target_scale);
             else
                 render_pixels<weighted(), with_aovs()>(p.context, cam, tile, begin, end, from, to, tally);
         }, p.camera);

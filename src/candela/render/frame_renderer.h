@@ -6,6 +6,7 @@
 // sums before and the sample range, every way gives the same bits.
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "candela/film/aov_layers.h"
 #include "candela/film/film_settings.h"
@@ -48,9 +49,11 @@ class FrameRenderer {
     // also the sums of squares and counts; with adaptive sampling (adaptive_sampling.h) only the
     // tile's active blocks take samples, the others are copied: then the tile must be aligned to
     // the block size, and no decision point may lie inside (begin, end). Adaptive
-    // sampling needs films with statistics.
-    void render_tile(const Tile& tile, uint32_t begin, uint32_t end, const Film& from, Film& to,
-                     TileTally& tally) const;
+    // sampling needs films with statistics. `target_scale`: with --target-error, its allocation's
+    // scale at the last decision point (error_allocation.h; blocks decide as with adaptive
+    // sampling, and the same conditions hold).
+    void render_tile(const Tile& tile, uint32_t begin, uint32_t end, const Film& from, Film& to, TileTally& tally,
+                     std::optional<double> target_scale = {}) const;
 
   private:
     struct Parts;

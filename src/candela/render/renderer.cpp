@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +24,7 @@
 #include "candela/lights/light_set.h"
 #include "candela/film/pixel_filter.h"
 #include "candela/render/adaptive_sampling.h"
+#include "candela/render/error_allocation.h"
 #include "candela/render/frame_renderer.h"
 #include "candela/render/pass_schedule.h"
 #include "candela/render/progress.h"
@@ -161,14 +163,20 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
     const bool statistics = needs_statistics(scene, options);
     check_start_state(frame, start, statistics);
     const std::optional<AdaptiveSettings>& adaptive = scene.sampler.adaptive;
-    // Passes end at decision points (adaptive_sampling.h) when decisions or target checks are made.
-    const uint32_t first_decision = adaptive ? uint32_t(adaptive->min_spp) : kFirstTargetCheck;
+    // Passes end at decision points (adaptive_sampling.h) when blocks decide there: with adaptive
+    // sampling, and with --target-error (its check and its allocation, error_allocation.h).
+    const bool target = options.target_error > 0.0;
+    const bool decisions = adaptive || target;
+    const uint32_t first_decision = first_decision_point(adaptive);
+    // --target-error's allocation scale at the last decision point.
+    std::optional<double> target_scale;
+    if (target) target_scale = std::numeric_limits<double>::infinity();
     const auto spp = uint32_t(scene.sampler.spp);
     RenderState& state = result.state;
     state = std::move(start);
     const uint32_t start_samples = state.samples_done;
     Film next;  // the second buffer of a pass (see Pass), allocated when there is one
-    const std::vector<Tile> tiles = render_tiles(width, height, options, adaptive.has_value());
+    const std::vector<Tile> tiles = render_tiles(width, height, options, decisions);
     const std::vector<PixelBounds> regions = state.film.has_statistics() ? tile_regions(tiles) : std::vector<PixelBounds>{};
     uint64_t pixels = 0;  // that the tiles cover
     for (const Tile& tile : tiles) pixels += uint64_t(tile.pixels());
@@ -202,7 +210,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
         uint64_t active = 0;
         for (size_t t = 0; t < tiles.size(); ++t) {
             for (const PixelBounds& block : tile_blocks(tiles[t]))
-                if (block_active(state.film, block, state.samples_done, *adaptive))
+                if (block_active(state.film, block, state.samples_done, adaptive, target_scale))
                     tile_active[t] += uint64_t(block.width()) * uint64_t(block.height());
             active += tile_active[t];
         }
@@ -220,7 +228,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
                     if (check_stop()) return;
                     const Tile& tile = tiles[t];
                     uint64_t rays_before = tally.rays.total();
-                    frame.render_tile(tile, pass.begin, pass.end, *pass.from, *pass.to, tally);
+                    frame.render_tile(tile, pass.begin, pass.end, *pass.from, *pass.to, tally, target_scale);
                     const uint64_t sampled = tile_active.empty() ? uint64_t(tile.pixels()) : tile_active[t];
                     progress.advance(sampled * n, tally.rays.total() - rays_before);
                 }
@@ -230,15 +238,17 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
 
     const double samples_before = state.film.has_statistics() ? spp_summary(state.film, regions).total : 0.0;
     // At a decision point: whether the render is done because every pixel stopped, or the
-    // estimate met the target. Also the estimate for the progress bar.
+    // estimate met the target; else the target's allocation for the passes to the next one. Also
+    // the estimate for the progress bar.
     auto converged = [&](ProgressBar& progress) {
         if (!state.film.has_statistics() || state.samples_done == 0) return false;
         const double estimate = estimated_relmse(state.film, regions);
         result.stats.relmse_estimate = estimate;
         progress.set_note(fmt::format("relMSE ~{:.3g}", estimate));
         if (!is_decision_point(state.samples_done, first_decision)) return false;
-        if (options.target_error > 0.0 && estimate <= options.target_error) return true;
-        return adaptive && update_active(progress) == 0;
+        if (target && estimate <= options.target_error) return true;
+        if (target) target_scale = target_allocation_scale(state.film, tiles, state.samples_done, options.target_error);
+        return decisions && update_active(progress) == 0;
     };
 
     Clock::time_point render_start = Clock::now();
@@ -246,7 +256,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
         ProgressBar progress(pixels * (spp - std::min(spp, start_samples)), options.progress);
         tbb::task_arena arena(threads);
         PassTiming previous;
-        if (adaptive) update_active(progress);  // a resumed render's blocks may have stopped
+        if (decisions) update_active(progress);  // a resumed render's blocks may have stopped
         result.stats.converged = converged(progress);
         while (state.samples_done < spp && !result.stats.converged) {
             if (check_stop()) break;
@@ -254,7 +264,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
             if (options.deadline)
                 seconds_left = std::chrono::duration<double>(*options.deadline - Clock::now()).count();
             uint32_t remaining = spp - state.samples_done;
-            if (adaptive || options.target_error > 0.0)
+            if (decisions)
                 remaining = std::min(remaining, next_decision_point(state.samples_done, first_decision) - state.samples_done);
             const uint32_t n =
                 next_pass_spp(previous, remaining, options.pass_seconds, seconds_left, options.pass_spp);

@@ -32,7 +32,7 @@ uint64_t film_memory_bytes(int width, int height);
 // and per layer the resolved float image and one encoded output in flight. 0 for none.
 uint64_t aov_memory_bytes(int width, int height, AovLayers aovs);
 // The statistics a film keeps for adaptive sampling or a noise target (film/film.h): sums of
-// squares and counts, in both films of a pass.
+// squares, counts, rays and prefix sums, in both films of a pass.
 uint64_t film_statistics_memory_bytes(int width, int height);
 // A triangle mesh as rendered: its arrays, Embree's copies and BVH, and the light tables it
 // gets if it emits.
