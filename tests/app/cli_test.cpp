@@ -1,9 +1,7 @@
 // The command-line program as a user meets it: exit codes, one-line located errors, outputs.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
-#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +9,7 @@
 #include <vector>
 
 #include "candela/image/image_layers.h"
+#include "support/run_command.h"
 #include "support/test_files.h"
 
 namespace {
@@ -23,14 +22,8 @@ struct CliResult {
 };
 
 CliResult run_candela(const std::string& args) {
-    std::string cmd = std::string(CANDELA_CLI) + " " + args + " 2>&1";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    EXPECT_NE(pipe, nullptr);
-    std::string out;
-    std::array<char, 4096> buf;
-    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-    int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+    const candela::test::CommandResult r = candela::test::run_command(std::string(CANDELA_CLI) + " " + args + " 2>&1");
+    return {r.exit_code, r.output};
 }
 
 fs::path temp_dir(const std::string& name) { return candela::test::fresh_dir("cli_" + name); }

@@ -8,13 +8,13 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "support/run_command.h"
 #include "support/test_files.h"
 
 namespace {
@@ -28,14 +28,9 @@ struct CliResult {
 
 // Runs `candela ARGS` in folder `cwd`.
 CliResult run_candela_in(const fs::path& cwd, const std::string& args) {
-    const std::string cmd = "cd '" + cwd.string() + "' && " + std::string(CANDELA_CLI) + " " + args + " 2>&1";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    EXPECT_NE(pipe, nullptr);
-    std::string out;
-    std::array<char, 4096> buf;
-    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+    const candela::test::CommandResult r =
+        candela::test::run_command("cd '" + cwd.string() + "' && " + std::string(CANDELA_CLI) + " " + args + " 2>&1");
+    return {r.exit_code, r.output};
 }
 
 fs::path temp_dir(const std::string& name) { return candela::test::fresh_dir("pbrt_cli_" + name); }

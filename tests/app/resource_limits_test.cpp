@@ -5,10 +5,8 @@
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 
 #include <algorithm>
-#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +14,7 @@
 
 #include "candela/core/error.h"
 #include "candela/formats/json/scene_loader.h"
+#include "support/run_command.h"
 #include "support/test_files.h"
 
 namespace candela {
@@ -76,14 +75,8 @@ struct CliResult {
 };
 
 CliResult run_candela(const std::string& args) {
-    const std::string cmd = std::string(CANDELA_CLI) + " " + args + " 2>&1 >/dev/null";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    EXPECT_NE(pipe, nullptr);
-    std::string out;
-    std::array<char, 4096> buf;
-    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+    const candela::test::CommandResult r = candela::test::run_command(std::string(CANDELA_CLI) + " " + args + " 2>&1 >/dev/null");
+    return {r.exit_code, r.output};
 }
 
 // One error line, exit code 2, and `fragment` in it.
@@ -186,7 +179,7 @@ TEST(ResourceLimits, CliChargesTheStatisticsOfATargetError) {
     const CliResult r = run_candela("render " + cornell + " --resolution 16384x16384 --target-error 0.01 " +
                                     "--memory-limit 24G -o " + out.string());
     expect_one_line_error(r, "--resolution 16384x16384: the scene at 16384x16384 pixels (");
-    EXPECT_NE(r.err.find("needs about 34.0 GiB of memory, but --memory-limit is 24.0 GiB"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("needs about 70.0 GiB of memory, but --memory-limit is 24.0 GiB"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out));
 }
 

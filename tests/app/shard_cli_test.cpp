@@ -4,10 +4,8 @@
 // merge refusal are one line on stderr and exit 2; scripts/slurm-shards.sh, run as Slurm would
 // run it (a stand-in sbatch), writes the render's bytes too.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
-#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +14,7 @@
 #include <vector>
 
 #include "app/child_process.h"
+#include "support/run_command.h"
 #include "support/test_files.h"
 
 namespace candela {
@@ -271,14 +270,8 @@ TEST(ShardCli, AdaptiveSettingsMustMatchToMergeOrResume) {
 
 // Runs `command` with bash; its exit status and output.
 CliRun run_bash(const std::string& command) {
-    const std::string cmd = "bash -c '" + command + "' 2>&1";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    EXPECT_NE(pipe, nullptr);
-    std::string out;
-    std::array<char, 4096> buf;
-    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+    const candela::test::CommandResult r = candela::test::run_command("bash -c '" + command + "' 2>&1");
+    return {r.exit_code, r.output};
 }
 
 TEST(ShardCli, SlurmScriptRendersAndMergesTheRendersBytes) {
