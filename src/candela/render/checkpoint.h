@@ -28,7 +28,9 @@
 //   samples done     u32      per pixel
 //   dropped samples  u64      NaN/Inf samples among them, counted as zero
 //   version 4 only:
-//     film values    u32      bit 0: weight sums; bit 1: statistics (sums of squares, counts);
+//     film values    u32      bit 0: weight sums; bit 1: statistics (film.h: sums of squares,
+//                             counts, rays, prefix sums); bit 2: set with bit 1 by builds whose
+//                             statistics have 13 values (earlier ones had 4: refused);
 //                             bits 8..13: the AOV layers, bit 8 + i for AovLayer(i) (albedo,
 //                             normal, depth, position, variance, spp)
 //     adaptive       u32, u32 sampler.adaptive's min_spp and the threshold's binary32 bits; 0, 0
