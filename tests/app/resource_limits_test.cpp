@@ -179,7 +179,7 @@ TEST(ResourceLimits, CliChargesTheStatisticsOfATargetError) {
     const CliResult r = run_candela("render " + cornell + " --resolution 16384x16384 --target-error 0.01 " +
                                     "--memory-limit 24G -o " + out.string());
     expect_one_line_error(r, "--resolution 16384x16384: the scene at 16384x16384 pixels (");
-    EXPECT_NE(r.err.find("needs about 70.0 GiB of memory, but --memory-limit is 24.0 GiB"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("needs about 54.0 GiB of memory, but --memory-limit is 24.0 GiB"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out));
 }
 

@@ -67,7 +67,7 @@ double average(const std::vector<double>& v) {
 std::vector<double> first_half_means(const Film& film) {
     std::vector<double> m;
     for (int y = 0; y < kSide; ++y)
-        for (int x = 0; x < kSide; ++x) m.push_back(film.prefix_sums(x, y).sum[0][1] / (kSpp / 2));
+        for (int x = 0; x < kSide; ++x) m.push_back(double(film.prefix_sums(x, y).sum[0][1]) / (kSpp / 2));
     return m;
 }
 
@@ -196,7 +196,7 @@ TEST(PixelStatistics, RegionsCarryTheStatistics) {
     film.squares(2, 1) = {5, 6, 7};
     film.count(2, 1) = 8;
     film.rays(2, 1) = 9;
-    film.prefix_sums(2, 1) = PrefixSums{{PixelSum{10, 11, 12}, PixelSum{13, 14, 15}}, {16, 17}};
+    film.prefix_sums(2, 1) = PrefixSums{{{{10, 11, 12}, {13, 14, 15}}}, {16, 17}};
     std::vector<double> values(17);
     film.read_region(PixelBounds{2, 1, 3, 2}, values.data());
     EXPECT_EQ(values, (std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17}));
@@ -206,7 +206,7 @@ TEST(PixelStatistics, RegionsCarryTheStatistics) {
     EXPECT_EQ(copy.count(2, 1), 8.0);
     EXPECT_EQ(copy.rays(2, 1), 9.0);
     EXPECT_EQ(copy.prefix_sums(2, 1).sum[1], film.prefix_sums(2, 1).sum[1]);
-    EXPECT_EQ(copy.prefix_sums(2, 1).weight[1], 17.0);
+    EXPECT_EQ(copy.prefix_sums(2, 1).weight[1], 17.0f);
 }
 
 }  // namespace

@@ -27,9 +27,9 @@ void set_block(Film& film, const PixelBounds& block, uint32_t n, double d, doubl
             film.squares(x, y) = {double(n), double(n), double(n)};
             film.rays(x, y) = rays;
             PrefixSums& p = film.prefix_sums(x, y);
-            const double a = (1.0 + d) * half, b = (1.0 - d) * half;
-            p.sum = {PixelSum{a, a, a}, PixelSum{a + b, a + b, a + b}};
-            p.weight = {half, 2.0 * half};
+            const auto a = float((1.0 + d) * half), ab = float((1.0 + d) * half + (1.0 - d) * half);
+            p.sum = {{{a, a, a}, {ab, ab, ab}}};
+            p.weight = {float(half), float(2.0 * half)};
         }
 }
 

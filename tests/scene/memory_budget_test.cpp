@@ -45,7 +45,7 @@ TEST(MemoryEstimate, StatisticsAreChargedWhenAnythingAsksForThem) {
     scene.camera.width = 640;
     scene.camera.height = 480;
     const uint64_t plain = scene_memory_bytes(scene), stats = film_statistics_memory_bytes(640, 480);
-    EXPECT_EQ(stats, uint64_t(640) * 480 * 2 * 8 * Film::kStatisticsValues);  // both films of a pass
+    EXPECT_EQ(stats, uint64_t(640) * 480 * 2 * 72);  // both films of a pass (film.h)
     EXPECT_EQ(scene_memory_bytes(scene, true), plain + stats);
     scene.sampler.adaptive = AdaptiveSettings{};
     EXPECT_EQ(scene_memory_bytes(scene), plain + stats);

@@ -32,9 +32,9 @@ void Film::read_region(const PixelBounds& region, double* out) const {
                 for (double v : squares_[i]) *out++ = v;
                 *out++ = counts_[i];
                 *out++ = rays_[i];
-                for (const PixelSum& p : prefixes_[i].sum)
-                    for (double v : p) *out++ = v;
-                for (double v : prefixes_[i].weight) *out++ = v;
+                for (const auto& p : prefixes_[i].sum)
+                    for (float v : p) *out++ = double(v);
+                for (float v : prefixes_[i].weight) *out++ = double(v);
             }
         }
 }
@@ -50,9 +50,9 @@ void Film::write_region(const PixelBounds& region, const double* in) {
                 for (double& v : squares_[i]) v = *in++;
                 counts_[i] = *in++;
                 rays_[i] = *in++;
-                for (PixelSum& p : prefixes_[i].sum)
-                    for (double& v : p) v = *in++;
-                for (double& v : prefixes_[i].weight) v = *in++;
+                for (auto& p : prefixes_[i].sum)
+                    for (float& v : p) v = float(*in++);
+                for (float& v : prefixes_[i].weight) v = float(*in++);
             }
         }
 }

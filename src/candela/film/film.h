@@ -18,8 +18,9 @@
 // what the per-pixel variance of the mean needs (film/pixel_statistics.h: from the squares, and
 // from the two halves of the last power of two, which works for Sobol samples too), the count
 // because adaptive sampling gives pixels different numbers of samples, and the rays as the pixel's
-// work, which --target-error's allocation weighs (render/error_allocation.h). That is 13 more
-// doubles (104 bytes) per pixel, only for such films: others keep their memory, speed and bits.
+// work, which --target-error's allocation weighs (render/error_allocation.h). That is 5 more
+// doubles and 8 floats (72 bytes) per pixel, only for such films: others keep their memory, speed
+// and bits. Regions (checkpoints, parts, messages) carry all 13 as doubles.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -65,21 +66,23 @@ inline void add_weighted_to_sum(PixelSum& sum, const Rgb& value, float weight) {
     sum[2] += double(value.b) * w;
 }
 
-// A pixel's sums (and weight sums, for a weighted film) over its first 2^(m-1) and first 2^m
-// samples, 2^m the largest power of two at most its count (both 0 before the first sample; with
-// one sample the first is 0): the two halves of a Sobol net (film/pixel_statistics.h).
+// A pixel's sums and weight sums (the counts, for an unweighted film) over its first 2^(m-1) and
+// first 2^m samples, 2^m the largest power of two at most its count (both 0 before the first
+// sample; with one sample the first is 0): the two halves of a Sobol net
+// (film/pixel_statistics.h). Floats, to halve their memory: only the error estimate reads them,
+// and a float's relative rounding (6e-8) is far below any error a render is stopped at.
 struct PrefixSums {
-    std::array<PixelSum, 2> sum{};
-    std::array<double, 2> weight{};
-    // Called after sample `index` (0-based) was added to `sum` (and `weight_sum`): when index + 1
-    // is a power of two, the sums so far become the last power of two's.
+    std::array<std::array<float, 3>, 2> sum{};
+    std::array<float, 2> weight{};
+    // Called after sample `index` (0-based) was added to `running` (and `running_weight`): when
+    // index + 1 is a power of two, the sums so far become the last power of two's.
     void after_sample(uint32_t index, const PixelSum& running, double running_weight) {
         const uint32_t n = index + 1;
         if ((n & (n - 1)) != 0) return;
         sum[0] = sum[1];
         weight[0] = weight[1];
-        sum[1] = running;
-        weight[1] = running_weight;
+        for (size_t c = 0; c < 3; ++c) sum[1][c] = float(running[c]);
+        weight[1] = float(running_weight);
     }
 };
 

@@ -55,13 +55,14 @@ PixelSum variance_of_mean_from_halves(const Film& film, int x, int y) {
     const double n = film.count(x, y);
     if (n < 2.0) return {0.0, 0.0, 0.0};
     const PrefixSums& p = film.prefix_sums(x, y);
-    const double first_weight = p.weight[0], second_weight = p.weight[1] - p.weight[0];
+    const double first_weight = double(p.weight[0]), second_weight = double(p.weight[1]) - double(p.weight[0]);
     // A weighted pixel whose samples in one half all had weight 0 has no mean there.
     if (!(first_weight > 0.0 && second_weight > 0.0)) return {0.0, 0.0, 0.0};
     const double power = std::bit_floor(uint64_t(n));
     PixelSum v{};
     for (size_t c = 0; c < 3; ++c) {
-        const double a = p.sum[0][c] / first_weight, b = (p.sum[1][c] - p.sum[0][c]) / second_weight;
+        const double a = double(p.sum[0][c]) / first_weight;
+        const double b = (double(p.sum[1][c]) - double(p.sum[0][c])) / second_weight;
         v[c] = (a - b) * (a - b) / 4.0 * (power / n);
     }
     return v;

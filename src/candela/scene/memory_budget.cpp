@@ -23,10 +23,10 @@ namespace {
 // resolved float image (12), and one output image being encoded (12). A resume also holds the
 // checkpoint's sums while reading them (24), which the same bound covers with the output's room.
 constexpr uint64_t kFilmBytesPerPixel = 24 + 24 + 12 + 12;
-// With statistics: three sums of squares, the count, the rays and the prefix sums (13 doubles,
-// 104 bytes: Film::kStatisticsValues) in each of the two films.
-constexpr uint64_t kFilmStatisticsBytesPerPixel = 104 + 104;
-static_assert(kFilmStatisticsBytesPerPixel == 2 * 8 * Film::kStatisticsValues);
+// With statistics: three sums of squares, the count and the rays (5 doubles) and the prefix sums
+// (8 floats): 72 bytes in each of the two films.
+constexpr uint64_t kFilmStatisticsBytesPerPixel = 72 + 72;
+static_assert(kFilmStatisticsBytesPerPixel == 2 * (5 * sizeof(double) + sizeof(PrefixSums)));
 // Per vertex: the position and Embree's copy of it; normals and uvs when the mesh has them.
 constexpr uint64_t kPositionBytes = 12 + 12;
 constexpr uint64_t kNormalBytes = 12;
