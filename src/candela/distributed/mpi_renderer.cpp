@@ -245,14 +245,9 @@ class RootRender {
     // Adaptive sampling or a target, at a decision point (or the start): each tile's pixels that take samples
     // until the next one, for the progress bar, which then counts them only (as render() does).
     uint64_t update_active() {
-        tile_active_.assign(tiles_.size(), 0);
+        tile_active_ = active_pixels_per_tile(state_.film, tiles_, state_.samples_done, adaptive_, target_scale_);
         uint64_t active = 0;
-        for (size_t t = 0; t < tiles_.size(); ++t) {
-            for (const PixelBounds& block : tile_blocks(tiles_[t]))
-                if (block_active(state_.film, block, state_.samples_done, adaptive_, target_scale_))
-                    tile_active_[t] += uint64_t(block.width()) * uint64_t(block.height());
-            active += tile_active_[t];
-        }
+        for (uint64_t pixels : tile_active_) active += pixels;
         progress_->set_remaining(active * (spp_ - std::min(spp_, state_.samples_done)));
         return active;
     }

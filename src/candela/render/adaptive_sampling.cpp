@@ -34,12 +34,21 @@ bool block_active(const Film& film, const PixelBounds& block, uint32_t begin,
     return false;
 }
 
+std::vector<uint64_t> active_pixels_per_tile(const Film& film, const std::vector<Tile>& tiles, uint32_t begin,
+                                             const std::optional<AdaptiveSettings>& adaptive,
+                                             std::optional<double> target_scale) {
+    std::vector<uint64_t> active(tiles.size(), 0);
+    for (size_t t = 0; t < tiles.size(); ++t)
+        for (const PixelBounds& block : tile_blocks(tiles[t]))
+            if (block_active(film, block, begin, adaptive, target_scale))
+                active[t] += uint64_t(block.width()) * uint64_t(block.height());
+    return active;
+}
+
 uint64_t active_pixels(const Film& film, const std::vector<Tile>& tiles, uint32_t begin,
                        const std::optional<AdaptiveSettings>& adaptive, std::optional<double> target_scale) {
     uint64_t active = 0;
-    for (const Tile& tile : tiles)
-        for (const PixelBounds& block : tile_blocks(tile))
-            if (block_active(film, block, begin, adaptive, target_scale)) active += uint64_t(block.width()) * uint64_t(block.height());
+    for (uint64_t pixels : active_pixels_per_tile(film, tiles, begin, adaptive, target_scale)) active += pixels;
     return active;
 }
 

@@ -72,6 +72,11 @@ std::vector<PixelBounds> tile_blocks(const Tile& tile);
 bool block_active(const Film& film, const PixelBounds& block, uint32_t begin,
                   const std::optional<AdaptiveSettings>& adaptive, std::optional<double> target_scale = {});
 
+// Per tile of `tiles`, its pixels that take samples from `begin` on (what the progress bar counts).
+std::vector<uint64_t> active_pixels_per_tile(const Film& film, const std::vector<Tile>& tiles, uint32_t begin,
+                                             const std::optional<AdaptiveSettings>& adaptive,
+                                             std::optional<double> target_scale = {});
+
 // The pixels of `tiles` that take samples from `begin` on.
 uint64_t active_pixels(const Film& film, const std::vector<Tile>& tiles, uint32_t begin,
                        const std::optional<AdaptiveSettings>& adaptive, std::optional<double> target_scale = {});

@@ -206,14 +206,9 @@ RenderResult render(const Scene& scene, const RenderOptions& options, RenderStat
     // (blocks stop only at decision points), counted there for the progress bar.
     std::vector<uint64_t> tile_active;
     auto update_active = [&](ProgressBar& progress) {
-        tile_active.assign(tiles.size(), 0);
+        tile_active = active_pixels_per_tile(state.film, tiles, state.samples_done, adaptive, target_scale);
         uint64_t active = 0;
-        for (size_t t = 0; t < tiles.size(); ++t) {
-            for (const PixelBounds& block : tile_blocks(tiles[t]))
-                if (block_active(state.film, block, state.samples_done, adaptive, target_scale))
-                    tile_active[t] += uint64_t(block.width()) * uint64_t(block.height());
-            active += tile_active[t];
-        }
+        for (uint64_t tile_pixels : tile_active) active += tile_pixels;
         progress.set_remaining(active * (spp - std::min(spp, state.samples_done)));
         return active;
     };
