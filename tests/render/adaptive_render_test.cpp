@@ -131,22 +131,28 @@ TEST_P(AdaptiveDeterminism, TargetAllocationSameBitsForThreadsTilesPassesAndResu
 INSTANTIATE_TEST_SUITE_P(Samplers, AdaptiveDeterminism,
                          ::testing::Values(SamplerType::kIndependent, SamplerType::kSobol));
 
+// Calls f(mean in a, mean in b, sum of their variances of the mean) for every pixel and channel
+// of two films with statistics.
+template <class F>
+void for_each_channel(const Film& a, const Film& b, F&& f) {
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            const PixelSum va = variance_of_mean(a, x, y), vb = variance_of_mean(b, x, y);
+            for (size_t c = 0; c < 3; ++c)
+                f(a.sum(x, y)[c] / a.count(x, y), b.sum(x, y)[c] / b.count(x, y), va[c] + vb[c]);
+        }
+}
+
 // Per pixel and channel, z = (adaptive - uniform) / sqrt(var_adaptive + var_uniform) from the
 // films' own estimates (independent samples: unbiased). Returns the fraction with |z| > 4: for a
 // t distribution with 15 degrees of freedom (the fewest samples a pixel has) that is 0.12%.
 double fraction_rejected(const Film& a, const Film& b) {
     int rejected = 0, total = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) {
-            const PixelSum va = variance_of_mean(a, x, y), vb = variance_of_mean(b, x, y);
-            for (size_t c = 0; c < 3; ++c) {
-                const double ma = a.sum(x, y)[c] / a.count(x, y), mb = b.sum(x, y)[c] / b.count(x, y);
-                const double var = va[c] + vb[c];
-                const bool differ = var > 0.0 ? std::abs(ma - mb) > 4.0 * std::sqrt(var) : ma != mb;
-                rejected += differ ? 1 : 0;
-                ++total;
-            }
-        }
+    for_each_channel(a, b, [&](double ma, double mb, double var) {
+        const bool differ = var > 0.0 ? std::abs(ma - mb) > 4.0 * std::sqrt(var) : ma != mb;
+        rejected += differ ? 1 : 0;
+        ++total;
+    });
     return double(rejected) / double(total);
 }
 
@@ -155,14 +161,10 @@ double fraction_rejected(const Film& a, const Film& b) {
 // sensitive to a bias common to many pixels (as early stopping could cause) than the per-pixel test.
 double aggregate_z(const Film& a, const Film& b) {
     double difference = 0.0, variance = 0.0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) {
-            const PixelSum va = variance_of_mean(a, x, y), vb = variance_of_mean(b, x, y);
-            for (size_t c = 0; c < 3; ++c) {
-                difference += a.sum(x, y)[c] / a.count(x, y) - b.sum(x, y)[c] / b.count(x, y);
-                variance += va[c] + vb[c];
-            }
-        }
+    for_each_channel(a, b, [&](double ma, double mb, double var) {
+        difference += ma - mb;
+        variance += var;
+    });
     return difference / std::sqrt(variance);
 }
 

@@ -159,20 +159,12 @@ TEST(AovRender, MissesHaveDocumentedValues) {
     }
 }
 
-FilterSettings filter_of(FilterType type) {
-    FilterSettings f;
-    f.type = type;
-    const float r = default_filter_radius(type);
-    f.radius = {r, r};
-    return f;
-}
-
 // The albedo and depth debug integrators put, as their beauty, the value the AOV layer sums for
 // each sample: so the layer must be the beauty image, bit for bit, for every kind of filter
 // (weighted films included) and samples split over passes.
 TEST(AovRender, LayersAreFilteredAndAveragedExactlyLikeTheBeauty) {
     for (FilterSettings filter : {FilterSettings(FilterType::kBox), FilterSettings(FilterType::kGaussian),
-                                  filter_of(FilterType::kMitchell), filter_of(FilterType::kLanczos)}) {
+                                  test::filter_of(FilterType::kMitchell), test::filter_of(FilterType::kLanczos)}) {
         Scene box = test::small_box_scene(21, 13, 6);  // edges, a sphere, misses
         box.film.filter = filter;
         box.film.aovs.add(AovLayer::kAlbedo);
@@ -210,7 +202,7 @@ TEST(AovRender, BeautyIsTheSameBitsWithOrWithoutAovs) {
 }
 
 TEST(AovRender, AovsAcrossCheckpointAndResumeEqualUninterrupted) {
-    for (FilterSettings filter : {FilterSettings(FilterType::kBox), filter_of(FilterType::kMitchell)}) {
+    for (FilterSettings filter : {FilterSettings(FilterType::kBox), test::filter_of(FilterType::kMitchell)}) {
         Scene s = test::lit_small_box_scene(23, 17, 9);  // a light, a mirror ball: every AOV branch
         s.film.filter = filter;
         s.film.aovs = all_aovs();
@@ -257,7 +249,7 @@ TEST(AovRender, MergedShardPartsGiveTheWholeRendersLayers) {
     fs::create_directories(dir);
     for (bool weighted : {false, true}) {
         Scene s = test::lit_small_box_scene(37, 23, 4);
-        if (weighted) s.film.filter = filter_of(FilterType::kMitchell);
+        if (weighted) s.film.filter = test::filter_of(FilterType::kMitchell);
         s.film.aovs = all_aovs();
         const RenderResult whole = render(s, {.threads = 2});
         std::vector<fs::path> files;

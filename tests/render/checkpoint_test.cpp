@@ -307,11 +307,12 @@ TEST(Checkpoint, StatisticsAndAdaptiveSettingsRoundTripInVersionFour) {
               std::string::npos);
 }
 
-TEST(Checkpoint, EveryCorruptByteOfVersionFourIsAClearError) {
-    const fs::path file = temp_file("corrupt4.ckpt");
-    write_checkpoint(file, adaptive_identity(), statistics_state());
+// Flips the low and the high bit of each of the first `header` bytes of `file`, of every
+// `stride`th byte after them and of the last 8 (the checksum), one at a time: reading each damaged
+// file is an error that names the file.
+void expect_every_flip_is_a_clear_error(const fs::path& file, size_t header, size_t stride) {
     const std::string bytes = read_bytes(file);
-    for (size_t at = 0; at < bytes.size(); at += at < kHeaderBytes + 12 || at + 8 >= bytes.size() ? 1 : 13) {
+    for (size_t at = 0; at < bytes.size(); at += at < header || at + 8 >= bytes.size() ? 1 : stride) {
         for (int bit : {0, 7}) {
             std::string damaged = bytes;
             damaged[at] = char(damaged[at] ^ (1 << bit));
@@ -320,6 +321,12 @@ TEST(Checkpoint, EveryCorruptByteOfVersionFourIsAClearError) {
             EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << at << ": " << message;
         }
     }
+}
+
+TEST(Checkpoint, EveryCorruptByteOfVersionFourIsAClearError) {
+    const fs::path file = temp_file("corrupt4.ckpt");
+    write_checkpoint(file, adaptive_identity(), statistics_state());
+    expect_every_flip_is_a_clear_error(file, kHeaderBytes + 12, 13);
 }
 
 // The first builds with statistics kept 4 values per pixel and did not set the film-values word's
@@ -382,16 +389,7 @@ TEST(Checkpoint, EveryCorruptByteIsAClearError) {
     // catches it; never a crash or a silently wrong film.
     const fs::path file = temp_file("corrupt.ckpt");
     write_checkpoint(file, identity(), state());
-    const std::string bytes = read_bytes(file);
-    for (size_t at = 0; at < bytes.size(); at += at < kHeaderBytes || at + 8 >= bytes.size() ? 1 : 11) {
-        for (int bit : {0, 7}) {
-            std::string damaged = bytes;
-            damaged[at] = char(damaged[at] ^ (1 << bit));
-            write_bytes(file, damaged);
-            std::string message = error_of([&] { read_checkpoint(file); });
-            EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << at << ": " << message;
-        }
-    }
+    expect_every_flip_is_a_clear_error(file, kHeaderBytes, 11);
 }
 
 TEST(Checkpoint, HugeClaimedSizeIsRefusedWithoutAllocating) {

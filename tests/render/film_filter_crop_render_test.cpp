@@ -15,21 +15,13 @@
 namespace candela {
 namespace {
 
-FilterSettings filter_of(FilterType type) {
-    FilterSettings f;
-    f.type = type;
-    const float r = default_filter_radius(type);
-    f.radius = {r, r};
-    return f;
-}
-
 // Every filter: the named ones and pbrt-v4's parameterized and tabulated ones.
 std::vector<FilterSettings> all_filters() {
     std::vector<FilterSettings> filters = {FilterType::kBox, FilterType::kTent, FilterType::kGaussian,
                                            FilterType::kSmallpt};
     for (FilterType t : {FilterType::kBox, FilterType::kTent, FilterType::kOffsetGaussian, FilterType::kMitchell,
                          FilterType::kLanczos})
-        filters.push_back(filter_of(t));
+        filters.push_back(test::filter_of(t));
     filters.back().radius = {4.0f, 1.5f};  // and an anisotropic one
     return filters;
 }
@@ -71,14 +63,14 @@ TEST(FilmFilterRender, WeightedFiltersChangeTheImage) {
     Scene s = test::lit_small_box_scene(16, 12, 4);
     const Image box = render(s, {.threads = 2}).image;
     for (FilterType t : {FilterType::kOffsetGaussian, FilterType::kMitchell, FilterType::kLanczos}) {
-        s.film.filter = filter_of(t);
+        s.film.filter = test::filter_of(t);
         EXPECT_FALSE(same_bits(render(s, {.threads = 2}).image, box)) << int(t);
     }
 }
 
 TEST(FilmFilterRender, WeightedRenderResumesThroughACheckpointBitForBit) {
     Scene s = test::lit_small_box_scene(19, 11, 8);
-    s.film.filter = filter_of(FilterType::kMitchell);
+    s.film.filter = test::filter_of(FilterType::kMitchell);
     const RenderResult reference = render(s, {.threads = 3});
     ASSERT_TRUE(reference.state.film.weighted());
     int passes = 0;
@@ -102,7 +94,7 @@ TEST(FilmFilterRender, WeightedRenderResumesThroughACheckpointBitForBit) {
 
 TEST(FilmFilterRender, CroppedPixelsAreTheFullRendersBitForBit) {
     for (SamplerType sampler : {SamplerType::kIndependent, SamplerType::kSobol}) {
-        for (const FilterSettings& f : {FilterSettings(FilterType::kTent), filter_of(FilterType::kLanczos)}) {
+        for (const FilterSettings& f : {FilterSettings(FilterType::kTent), test::filter_of(FilterType::kLanczos)}) {
             Scene s = test::lit_small_box_scene(37, 23, 4);
             s.sampler.type = sampler;
             s.film.filter = f;

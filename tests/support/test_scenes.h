@@ -7,6 +7,15 @@
 
 namespace candela::test {
 
+// A pixel filter of `type` with its default radius (film/film_settings.h).
+inline FilterSettings filter_of(FilterType type) {
+    FilterSettings f;
+    f.type = type;
+    const float r = default_filter_radius(type);
+    f.radius = {r, r};
+    return f;
+}
+
 // Points the scene's camera (up +y) from `position` at `look_at` and sets the image size.
 inline void set_camera(Scene& scene, Vec3f position, Vec3f look_at, float fov_degrees, int width, int height) {
     scene.camera.position = position;
