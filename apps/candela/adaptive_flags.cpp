@@ -6,6 +6,7 @@
 
 #include "candela/core/error.h"
 #include "candela/film/pixel_statistics.h"
+#include "candela/render/pass_engine.h"
 #include "candela/render/renderer.h"
 #include "candela/render/shard.h"
 #include "candela/scene/scene.h"

@@ -9,7 +9,7 @@
 #include "candela/film/pixel_statistics.h"
 #include "candela/image/image_io.h"
 #include "candela/image/image_layers.h"
-#include "candela/render/shard_merge.h"
+#include "candela/render/job/shard_merge.h"
 
 namespace fs = std::filesystem;
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "app/child_process.h"
-#include "candela/render/checkpoint.h"
+#include "candela/render/job/checkpoint.h"
 #include "support/test_files.h"
 
 namespace candela {

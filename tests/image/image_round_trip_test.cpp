@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "candela/film/tonemap.h"
+#include "candela/image/tonemap.h"
 #include "candela/image/image_io.h"
 #include "image/test_files.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "candela/film/tonemap.h"
+#include "candela/image/tonemap.h"
 #include "candela/image/image_io.h"
 #include "image/test_files.h"
 #include "support/png_bytes.h"

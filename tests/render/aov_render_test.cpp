@@ -11,10 +11,10 @@
 
 #include "candela/core/error.h"
 #include "candela/film/pixel_filter.h"
-#include "candela/render/checkpoint.h"
+#include "candela/render/job/checkpoint.h"
 #include "candela/render/renderer.h"
-#include "candela/render/shard_merge.h"
-#include "candela/render/shard_part.h"
+#include "candela/render/job/shard_merge.h"
+#include "candela/render/job/shard_part.h"
 #include "support/test_scenes.h"
 
 namespace candela {

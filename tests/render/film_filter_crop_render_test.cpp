@@ -8,7 +8,7 @@
 #include <string>
 
 #include "candela/core/error.h"
-#include "candela/render/checkpoint.h"
+#include "candela/render/job/checkpoint.h"
 #include "candela/render/renderer.h"
 #include "support/test_scenes.h"
 

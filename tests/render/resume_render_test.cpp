@@ -12,7 +12,7 @@
 #include <tuple>
 
 #include "candela/core/error.h"
-#include "candela/render/checkpoint.h"
+#include "candela/render/job/checkpoint.h"
 #include "candela/render/renderer.h"
 #include "candela/scene/enum_names.h"
 #include "support/test_scenes.h"

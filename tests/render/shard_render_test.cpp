@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "candela/render/renderer.h"
-#include "candela/render/shard_merge.h"
-#include "candela/render/shard_part.h"
+#include "candela/render/job/shard_merge.h"
+#include "candela/render/job/shard_part.h"
 #include "support/test_scenes.h"
 #include "support/test_files.h"
 

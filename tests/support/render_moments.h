@@ -38,7 +38,7 @@
 #include "candela/image/image.h"
 #include "candela/image/image_io.h"
 #include "candela/lights/light_set.h"
-#include "candela/render/integrator.h"
+#include "candela/integrators/integrator.h"
 #include "candela/render/renderer.h"
 #include "candela/sampling/sampler.h"
 #include "candela/scene/scene.h"

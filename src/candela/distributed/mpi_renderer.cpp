@@ -1,6 +1,5 @@
 #include "candela/distributed/mpi_renderer.h"
 
-#include <fmt/format.h>
 #include <sched.h>
 
 #include <algorithm>
@@ -8,7 +7,6 @@
 #include <cmath>
 #include <condition_variable>
 #include <deque>
-#include <limits>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -24,11 +22,7 @@
 #include "candela/film/film.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/render/frame_renderer.h"
-#include "candela/film/pixel_statistics.h"
-#include "candela/render/adaptive_sampling.h"
-#include "candela/render/error_allocation.h"
-#include "candela/render/pass_schedule.h"
-#include "candela/render/progress.h"
+#include "candela/render/pass_engine.h"
 #include "candela/scene/scene.h"
 
 namespace candela {
@@ -60,81 +54,77 @@ int threads_for(const MpiSession& session, const RenderOptions& options) {
     return options.threads > 0 ? options.threads : default_threads_per_rank(session.local_size());
 }
 
-// Rank 0: the scheduler, its own render threads, and the thread that answers the other ranks.
-class RootRender {
+// Rank 0's pass executor: the tile scheduler, rank 0's own render threads, and the calling
+// thread, which answers the other ranks while a pass runs. The pass policy is the engine's.
+class RootExecutor final : public PassExecutor {
   public:
-    RootRender(const MpiSession& session, const FrameRenderer& frame, const Scene& scene,
-               const MpiRenderOptions& options, RenderState start)
-        : session_(session), frame_(frame), options_(options), spp_(uint32_t(scene.sampler.spp)),
-          adaptive_(scene.sampler.adaptive),
-          target_(options.render.target_error > 0.0),
-          first_decision_(first_decision_point(adaptive_)),
-          tiles_(render_tiles(frame.width(), frame.height(), options.render, adaptive_ || target_)),
-          scheduler_(int(tiles_.size()), session.size(), start.samples_done == 0) {
-        state_ = std::move(start);
-        if (target_) target_scale_ = std::numeric_limits<double>::infinity();
-        start_samples_ = state_.samples_done;
-        start_dropped_ = state_.dropped_samples;
-        for (const Tile& tile : tiles_) {
-            pixels_ += uint64_t(tile.pixels());
-            regions_.push_back(tile.bounds());
-        }
-        if (state_.film.has_statistics()) samples_before_ = spp_summary(state_.film, regions_).total;
+    RootExecutor(const MpiSession& session, const FrameRenderer& frame, const MpiRenderOptions& options,
+                 const std::vector<Tile>& tiles, uint32_t start_samples)
+        : session_(session), frame_(frame), options_(options), tiles_(tiles),
+          threads_(threads_for(session, options.render)), start_samples_(start_samples),
+          tallies_(size_t(threads_)), scheduler_(int(tiles.size()), session.size(), start_samples == 0) {
+        for (int i = 0; i < threads_; ++i)
+            workers_.emplace_back([this, &tally = tallies_[size_t(i)]] { render_locally(tally); });
     }
 
-    MpiRenderResult run() {
-        const int threads = threads_for(session_, options_.render);
-        const Clock::time_point render_start = Clock::now();
+    ~RootExecutor() override { stop_threads(); }
+
+    int threads() const override { return threads_; }
+    int stop_signal() const { return stop_signal_; }
+    int exit_code(RenderEnd end) const { return end == RenderEnd::kStopped ? 128 + stop_signal_ : 0; }
+    const MpiChannel& channel() const { return channel_; }
+
+    // Hands the pass's tiles out (to rank 0's threads and to requests, also those that came
+    // while no pass ran) and answers the other ranks until every result is home or the engine
+    // says stop.
+    uint64_t run_pass(const PassWork& pass, PassEngine& engine) override {
         {
-            ProgressBar progress(pixels_ * (spp_ - std::min(spp_, start_samples_)), options_.render.progress);
-            progress_ = &progress;
-            std::vector<TileTally> tallies(static_cast<size_t>(threads));
-            std::vector<std::thread> workers;
-            for (int i = 0; i < threads; ++i) workers.emplace_back([this, &tally = tallies[size_t(i)]] { render_locally(tally); });
-            if (adaptive_ || target_) {
-                std::lock_guard lock(mutex_);
-                update_active();  // a resumed render's blocks may have stopped
-            }
-            serve();
-            {
-                std::lock_guard lock(mutex_);
-                shutdown_ = true;
-            }
-            work_.notify_all();
-            for (std::thread& t : workers) t.join();
-            for (const TileTally& t : tallies) rays_ += t.rays;
-            if (end_ != RenderEnd::kComplete && options_.on_stop && state_.samples_done > start_samples_)
-                options_.on_stop(state_);
-            end_workers();
-            progress_ = nullptr;
+            std::lock_guard lock(mutex_);
+            pass_ = pass;
+            engine_ = &engine;
+            pass_dropped_ = 0;
+            scheduler_.start_pass();
+            pass_active_ = true;
+            std::vector<std::pair<int, int>> waiting;
+            waiting.swap(waiting_requests_);
+            for (auto [rank, want] : waiting) assign(rank, want);
         }
-        MpiRenderResult out;
-        RenderResult& r = out.result;
-        r.end = end_;
-        r.stats.build_seconds = frame_.build_seconds();
-        r.stats.render_seconds = seconds_since(render_start);
-        r.stats.rays = rays_;
-        r.stats.threads = threads;
-        r.stats.passes = passes_;
-        r.stats.samples = state_.film.has_statistics()
-                              ? uint64_t(spp_summary(state_.film, regions_).total - samples_before_)
-                              : pixels_ * (state_.samples_done - start_samples_);
-        r.stats.relmse_estimate = relmse_estimate_;
-        r.stats.converged = converged_;
-        r.stats.dropped_samples = state_.dropped_samples - start_dropped_;
-        r.image = state_.film.resolve(state_.samples_done);
-        r.aov_layers = state_.film.resolve_aovs(state_.samples_done);
-        r.state = std::move(state_);
-        out.stop_signal = stop_signal_;
-        out.exit_code = exit_code();
-        out.ranks = session_.size();
-        out.bytes_sent = channel_.bytes_sent();
-        out.bytes_received = channel_.bytes_received();
-        return out;
+        work_.notify_all();
+        while (true) {
+            while (std::optional<ReceivedMessage> m = channel_.try_receive(kTagToRoot)) handle(*m, engine);
+            if (engine.should_stop()) break;
+            std::unique_lock lock(mutex_);
+            if (scheduler_.pass_complete()) break;
+            channel_.progress();
+            main_.wait_for(lock, kRootPollInterval);
+        }
+        std::lock_guard lock(mutex_);
+        pass_active_ = false;  // rank 0's threads finish the tile in hand and take no more
+        return pass_dropped_;
+    }
+
+    // Stops rank 0's threads; if the job stopped early, saves its state (on_stop) and only then
+    // tells the other ranks to stop (one of them may have died), and collects their ray counts.
+    RayCounters finish(RenderEnd end, const RenderState& state) override {
+        stop_threads();
+        for (const TileTally& t : tallies_) rays_ += t.rays;
+        if (end == RenderEnd::kStopped && stop_signal_ == 0) stop_signal_ = options_.stop_signal();
+        if (end != RenderEnd::kComplete && options_.on_stop && state.samples_done > start_samples_)
+            options_.on_stop(state);
+        end_workers(end);
+        return rays_;
     }
 
   private:
-    int exit_code() const { return end_ == RenderEnd::kStopped ? 128 + stop_signal_ : 0; }
+    void stop_threads() {
+        {
+            std::lock_guard lock(mutex_);
+            if (shutdown_) return;
+            shutdown_ = true;
+        }
+        work_.notify_all();
+        for (std::thread& t : workers_) t.join();
+    }
 
     // A render thread of rank 0: takes tiles of the pass in flight until told to stop.
     void render_locally(TileTally& tally) {
@@ -144,128 +134,18 @@ class RootRender {
             work_.wait(lock, [&] { return shutdown_ || (pass_active_ && scheduler_.pending() > 0); });
             if (shutdown_) return;
             const int tile_index = scheduler_.take(0, 1).front().tile;
-            const Tile tile = tiles_[size_t(tile_index)];
-            const uint32_t begin = pass_begin_, end = pass_end_;
-            const std::optional<double> target_scale = target_scale_;
+            const PassWork pass = pass_;
+            PassEngine& engine = *engine_;
             lock.unlock();
             const uint64_t rays_before = tally.rays.total(), dropped_before = tally.dropped;
-            frame_.render_tile(tile, begin, end, state_.film, next_, tally, target_scale);
-            progress_->advance(sampled_pixels(size_t(tile_index)) * (end - begin), tally.rays.total() - rays_before);
+            frame_.render_tile(tiles_[size_t(tile_index)], pass.begin, pass.end, *pass.from, *pass.to, tally,
+                               pass.target_scale);
+            engine.tile_done(size_t(tile_index), pass, tally.rays.total() - rays_before);
             lock.lock();
             pass_dropped_ += tally.dropped - dropped_before;
             scheduler_.done(tile_index, 0);
             if (scheduler_.pass_complete()) main_.notify_one();  // else the poll will do: wakes cost
         }
-    }
-
-    // The answering thread's loop, until the render is complete, stopped or out of time.
-    void serve() {
-        {
-            std::lock_guard lock(mutex_);
-            if (!start_pass()) return;
-        }
-        while (true) {
-            while (std::optional<ReceivedMessage> m = channel_.try_receive(kTagToRoot)) handle(*m);
-            if (end_ == RenderEnd::kComplete) check_stop();
-            if (end_ != RenderEnd::kComplete) return;
-            std::unique_lock lock(mutex_);
-            if (pass_active_ && scheduler_.pass_complete()) {
-                finish_pass();
-                if (!start_pass()) return;
-            }
-            channel_.progress();
-            main_.wait_for(lock, kRootPollInterval);
-        }
-    }
-
-    void check_stop() {
-        if (options_.render.stop && options_.render.stop()) {
-            stop_signal_ = options_.stop_signal();
-            end_ = RenderEnd::kStopped;
-        } else if (options_.render.deadline && Clock::now() >= *options_.render.deadline) {
-            end_ = RenderEnd::kDeadline;
-        }
-    }
-
-    // Starts the next pass (mutex_ held); false when there is none: all samples are done, or not
-    // one more sample per pixel fits before the deadline.
-    bool start_pass() {
-        const bool converged_now = converged();  // also the estimate after the last pass
-        if (state_.samples_done >= spp_ || converged_now) return false;
-        std::optional<double> seconds_left;
-        if (options_.render.deadline)
-            seconds_left = std::chrono::duration<double>(*options_.render.deadline - Clock::now()).count();
-        // Passes end at the decision points of adaptive sampling and of a target error, as in
-        // render(): the decisions are made from the state there, so they are the same.
-        uint32_t remaining = spp_ - state_.samples_done;
-        if (adaptive_ || target_)
-            remaining = std::min(remaining, next_decision_point(state_.samples_done, first_decision_) - state_.samples_done);
-        const uint32_t n = next_pass_spp(previous_, remaining, options_.render.pass_seconds, seconds_left,
-                                         options_.render.pass_spp);
-        if (n == 0) {
-            end_ = RenderEnd::kDeadline;
-            return false;
-        }
-        if (next_.width() != frame_.width() || next_.height() != frame_.height())
-            next_ = Film(frame_.width(), frame_.height(), frame_.weighted(), frame_.aovs(), state_.film.has_statistics());
-        pass_begin_ = state_.samples_done;
-        pass_end_ = state_.samples_done + n;
-        ++pass_id_;
-        pass_dropped_ = 0;
-        pass_start_ = Clock::now();
-        scheduler_.start_pass();
-        pass_active_ = true;
-        work_.notify_all();
-        std::vector<std::pair<int, int>> waiting;
-        waiting.swap(waiting_requests_);
-        for (auto [rank, want] : waiting) assign(rank, want);
-        return true;
-    }
-
-    // At a pass boundary, for a film with statistics (mutex_ held): whether the render is done
-    // because every pixel stopped or the estimated relMSE met the target, as render() decides it,
-    // else the target's allocation scale for the passes to the next decision point; also the
-    // estimate, for the progress bar and the summary.
-    bool converged() {
-        if (!state_.film.has_statistics() || state_.samples_done == 0) return false;
-        relmse_estimate_ = estimated_relmse(state_.film, regions_);
-        progress_->set_note(fmt::format("relMSE ~{:.3g}", *relmse_estimate_));
-        if (!is_decision_point(state_.samples_done, first_decision_)) return false;
-        if (target_ && *relmse_estimate_ <= options_.render.target_error) {
-            converged_ = true;
-            return converged_;
-        }
-        if (target_)
-            target_scale_ =
-                target_allocation_scale(state_.film, tiles_, state_.samples_done, options_.render.target_error);
-        if ((adaptive_ || target_) && update_active() == 0) converged_ = true;
-        return converged_;
-    }
-
-    // Adaptive sampling or a target, at a decision point (or the start): each tile's pixels that take samples
-    // until the next one, for the progress bar, which then counts them only (as render() does).
-    uint64_t update_active() {
-        tile_active_ = active_pixels_per_tile(state_.film, tiles_, state_.samples_done, adaptive_, target_scale_);
-        uint64_t active = 0;
-        for (uint64_t pixels : tile_active_) active += pixels;
-        progress_->set_remaining(active * (spp_ - std::min(spp_, state_.samples_done)));
-        return active;
-    }
-
-    // The pixels of tile `t` that take this pass's samples.
-    uint64_t sampled_pixels(size_t t) const {
-        return tile_active_.empty() ? uint64_t(tiles_[t].pixels()) : tile_active_[t];
-    }
-
-    // Every tile of the pass is home (mutex_ held): `next_` is the new state.
-    void finish_pass() {
-        pass_active_ = false;
-        std::swap(state_.film, next_);
-        state_.samples_done = pass_end_;
-        state_.dropped_samples += pass_dropped_;
-        ++passes_;
-        previous_ = {pass_end_ - pass_begin_, seconds_since(pass_start_)};
-        if (options_.render.on_pass) options_.render.on_pass(state_);
     }
 
     // Answers a request of `rank` for `want` tiles now, or when the next pass starts (mutex_ held).
@@ -277,25 +157,25 @@ class RootRender {
             return;
         }
         MessageWriter w(TileMessageType::kAssign);
-        w.u32(pass_id_);
-        w.u32(pass_begin_);
-        w.u32(pass_end_);
-        w.u8(target_scale_ ? 1 : 0);
-        w.f64(target_scale_.value_or(0.0));
+        w.u32(pass_.id);
+        w.u32(pass_.begin);
+        w.u32(pass_.end);
+        w.u8(pass_.target_scale ? 1 : 0);
+        w.f64(pass_.target_scale.value_or(0.0));
         w.u32(uint32_t(tiles.size()));
         for (const TileScheduler::Assignment& a : tiles) {
             w.u32(uint32_t(a.tile));
             w.u8(a.send_values ? 1 : 0);
             if (!a.send_values) continue;
             const Tile& tile = tiles_[size_t(a.tile)];
-            scratch_.resize(size_t(tile.pixels()) * size_t(state_.film.values_per_pixel()));
-            state_.film.read_region(tile.bounds(), scratch_.data());
+            scratch_.resize(size_t(tile.pixels()) * size_t(pass_.from->values_per_pixel()));
+            pass_.from->read_region(tile.bounds(), scratch_.data());
             w.doubles(scratch_.data(), scratch_.size());
         }
         channel_.send(rank, kTagToWorker, std::move(w.bytes()));
     }
 
-    void handle(const ReceivedMessage& m) {
+    void handle(const ReceivedMessage& m, PassEngine& engine) {
         MessageReader r(m.bytes);
         const std::optional<TileMessageType> type = r.type();
         if (!type) protocol_error("unknown type from rank " + std::to_string(m.source));
@@ -311,23 +191,21 @@ class RootRender {
                 const uint32_t pass = r.u32(), tile_index = r.u32();
                 const uint64_t dropped = r.u64();
                 const RayCounters rays = r.rays();
-                if (r.failed() || pass != pass_id_ || !pass_active_ || tile_index >= tiles_.size())
+                if (r.failed() || pass != pass_.id || !pass_active_ || tile_index >= tiles_.size())
                     protocol_error("result from rank " + std::to_string(m.source));
                 const Tile& tile = tiles_[tile_index];
-                scratch_.resize(size_t(tile.pixels()) * size_t(next_.values_per_pixel()));
+                scratch_.resize(size_t(tile.pixels()) * size_t(pass_.to->values_per_pixel()));
                 if (!r.doubles(scratch_.data(), scratch_.size()) || !r.at_end()) protocol_error("result values");
-                next_.write_region(tile.bounds(), scratch_.data());
+                pass_.to->write_region(tile.bounds(), scratch_.data());
                 pass_dropped_ += dropped;
                 scheduler_.done(int(tile_index), m.source);
-                progress_->advance(sampled_pixels(tile_index) * (pass_end_ - pass_begin_), rays.total());
+                engine.tile_done(tile_index, pass_, rays.total());
                 break;
             }
             case TileMessageType::kStop: {
                 const int signal = r.i32();
-                if (end_ == RenderEnd::kComplete) {
-                    stop_signal_ = signal;
-                    end_ = RenderEnd::kStopped;
-                }
+                if (stop_signal_ == 0) stop_signal_ = signal;
+                engine.abandon(RenderEnd::kStopped);
                 break;
             }
             default: protocol_error("unexpected message from rank " + std::to_string(m.source));
@@ -336,10 +214,10 @@ class RootRender {
 
     // Tells every other rank to stop and waits for each one's goodbye with its ray count; what
     // they send before it (results of an abandoned pass, requests) is dropped.
-    void end_workers() {
+    void end_workers(RenderEnd end) {
         for (int rank = 1; rank < session_.size(); ++rank) {
             MessageWriter w(TileMessageType::kEnd);
-            w.i32(exit_code());
+            w.i32(exit_code(end));
             channel_.send(rank, kTagToWorker, std::move(w.bytes()));
         }
         int goodbyes = 0;
@@ -362,20 +240,15 @@ class RootRender {
     const MpiSession& session_;
     const FrameRenderer& frame_;
     const MpiRenderOptions& options_;
-    const uint32_t spp_;
-    const std::optional<AdaptiveSettings> adaptive_;
-    const bool target_;  // --target-error
-    const uint32_t first_decision_;  // adaptive sampling's or a target's first decision point
-    const std::vector<Tile> tiles_;
-    uint64_t pixels_ = 0;                // that the tiles cover
-    std::vector<PixelBounds> regions_;   // the tiles', for the film's reductions
-    double samples_before_ = 0;          // films with statistics: the samples the start state had
-    std::optional<double> relmse_estimate_;
-    std::optional<double> target_scale_;  // --target-error's allocation scale, at the last decision point
-    bool converged_ = false;
-    std::vector<uint64_t> tile_active_;  // adaptive sampling: see update_active
+    const std::vector<Tile>& tiles_;
+    const int threads_;
+    const uint32_t start_samples_;
+    std::vector<TileTally> tallies_;  // one per render thread
+    std::vector<std::thread> workers_;
     MpiChannel channel_;
-    ProgressBar* progress_ = nullptr;
+    std::vector<double> scratch_;
+    RayCounters rays_;
+    int stop_signal_ = 0;  // the signal that stopped the job, received by any rank
 
     // Shared with the render threads, under mutex_; the films' tiles are each written by one
     // thread (or the answering thread, for results) between a take and its done.
@@ -383,24 +256,12 @@ class RootRender {
     std::condition_variable work_;  // wakes render threads: a pass started, or shutdown
     std::condition_variable main_;  // wakes the answering thread: a tile is done
     TileScheduler scheduler_;
-    RenderState state_;
-    Film next_;
-    uint32_t start_samples_ = 0;
-    uint64_t start_dropped_ = 0;
+    PassWork pass_;
+    PassEngine* engine_ = nullptr;
     bool pass_active_ = false;
     bool shutdown_ = false;
-    uint32_t pass_id_ = 0, pass_begin_ = 0, pass_end_ = 0;
     uint64_t pass_dropped_ = 0;
-    Clock::time_point pass_start_;
-    PassTiming previous_;
-    int passes_ = 0;
     std::vector<std::pair<int, int>> waiting_requests_;  // (rank, tiles wanted)
-    std::vector<double> scratch_;
-
-    // The answering thread's own.
-    RenderEnd end_ = RenderEnd::kComplete;
-    int stop_signal_ = 0;
-    RayCounters rays_;
 };
 
 // Any other rank: render threads take tiles from a local queue that the communicating thread
@@ -412,8 +273,7 @@ class WorkerRender {
     WorkerRender(const MpiSession& session, const FrameRenderer& frame, const Scene& scene,
                  const MpiRenderOptions& options)
         : session_(session), frame_(frame), options_(options),
-          tiles_(render_tiles(frame.width(), frame.height(), options.render,
-                              scene.sampler.adaptive.has_value() || options.render.target_error > 0.0)),
+          tiles_(render_tiles(frame.width(), frame.height(), options.render, makes_decisions(scene, options.render))),
           film_(frame.width(), frame.height(), frame.weighted(), frame.aovs(), needs_statistics(scene, options.render)),
           threads_(threads_for(session, options.render)) {}
 
@@ -624,11 +484,21 @@ MpiRenderResult render_mpi(const MpiSession& session, const Scene& scene, const 
                            RenderState start) {
     const FrameRenderer frame(scene);
     if (session.rank() != 0) return WorkerRender(session, frame, scene, options).run();
-    if (start.film.width() != frame.width() || start.film.height() != frame.height() ||
-        start.film.weighted() != frame.weighted() || !(start.film.aovs() == frame.aovs()) ||
-        start.film.has_statistics() != needs_statistics(scene, options.render))
+    // The other ranks' films are made for the scene (WorkerRender): rank 0's must carry as many
+    // values per pixel, or the messages would not fit.
+    if (start.film.has_statistics() != needs_statistics(scene, options.render))
         throw RenderError("render: the start state does not fit the scene's film");
-    return RootRender(session, frame, scene, options, std::move(start)).run();
+    const uint32_t start_samples = start.samples_done;
+    PassEngine engine(frame, scene, options.render, std::move(start));
+    RootExecutor root(session, frame, options, engine.tiles(), start_samples);
+    MpiRenderResult out;
+    out.result = engine.run(root);
+    out.stop_signal = root.stop_signal();
+    out.exit_code = root.exit_code(out.result.end);
+    out.ranks = session.size();
+    out.bytes_sent = root.channel().bytes_sent();
+    out.bytes_received = root.channel().bytes_received();
+    return out;
 }
 
 }  // namespace candela

@@ -4,12 +4,13 @@
 // own FrameRenderer, and every tile's pass is computed by FrameRenderer::render_tile from the
 // tile's values after the previous pass, whichever rank does it.
 //
-// Rank 0 (the root) owns the image. It cuts each pass into tiles and hands them out on request
-// (distributed/tile_scheduler.h: a rank gets back the tiles it computed last, so their start
-// values need not travel); it renders tiles itself on its own threads while one thread answers
-// the others; every result comes home at once, into rank 0's second film, so that at each pass
-// boundary rank 0 holds the whole state, as render() does: it decides the next pass's size from
-// the measured rate, stops, meets the deadline and writes checkpoints there.
+// Rank 0 runs the render's one pass engine (render/pass_engine.h: pass sizes, decisions, stop,
+// deadline, checkpoints), with an executor that cuts each pass into tiles and hands them out on
+// request (distributed/tile_scheduler.h: a rank gets back the tiles it computed last, so their
+// start values need not travel); it renders tiles itself on its own threads while the calling
+// thread answers the others; every result comes home at once, into rank 0's second film, so that
+// at each pass boundary rank 0 holds the whole state. This file holds messaging, scheduling and
+// rank bookkeeping only.
 //
 // Bytes per pixel and pass: the result, 8 per value (24, or 32 with weight sums), home to rank
 // 0; the start values, as much again, only for a tile that changed rank (docs/CLUSTER.md).
@@ -20,11 +21,12 @@
 #include <cstdint>
 #include <functional>
 
-#include "candela/render/renderer.h"
+#include "candela/render/render_options.h"
 
 namespace candela {
 
 class MpiSession;
+struct Scene;
 
 struct MpiRenderOptions {
     // threads: per rank (0: this host's cores shared among its ranks); progress, deadline,
@@ -50,7 +52,8 @@ struct MpiRenderResult {
 };
 
 // Every rank calls it, with the same scene and options; rank 0 passes the state to start from
-// (e.g. a checkpoint's), the others an empty one. Throws RenderError as render() does.
+// (e.g. a checkpoint's), the others an empty one. Throws RenderError when the start state does not
+// fit the scene (PassEngine).
 MpiRenderResult render_mpi(const MpiSession& session, const Scene& scene, const MpiRenderOptions& options,
                            RenderState start);
 

@@ -23,7 +23,7 @@
 #include <span>
 #include <vector>
 
-#include "candela/render/ray_counters.h"
+#include "candela/integrators/ray_counters.h"
 
 namespace candela {
 

@@ -6,6 +6,7 @@
 
 #include "candela/core/platform.h"
 #include "candela/film/aov_layers.h"
+#include "candela/image/display_encoding.h"
 #include "candela/math/vec.h"
 
 namespace candela {
@@ -55,8 +56,6 @@ inline FilterSettings::FilterSettings(FilterType t) : type(t) {
     const float r = t == FilterType::kTent ? 1.0f : default_filter_radius(t);
     radius = Vec2f(r, r);
 }
-enum class Tonemap { kClamp, kExposure, kReinhard, kAces };
-enum class Transfer { kSrgb, kGamma };
 
 // A rectangle of pixels [x0, x1) x [y0, y1), y down from the top row.
 struct PixelBounds {
@@ -65,15 +64,13 @@ struct PixelBounds {
     int height() const { return y1 - y0; }
 };
 
-struct FilmSettings {
+// The display encoding (image/display_encoding.h: tone map, exposure, transfer, gamma) is a base,
+// so that film.tonemap reads as the scene file's film.tonemap and image writers take the settings.
+struct FilmSettings : DisplayEncoding {
     FilterSettings filter;
     // The part of the image rendered and written (pbrt-v4's cropwindow): [x0, x1, y0, y1] as
     // fractions of the width and height, y from the top; see crop_pixel_bounds.
     std::array<float, 4> crop_window{0.0f, 1.0f, 0.0f, 1.0f};
-    Tonemap tonemap = Tonemap::kClamp;
-    float exposure = 0.5f;  // the `exposure` tone map's parameter, in [0, 1)
-    Transfer transfer = Transfer::kSrgb;
-    float gamma = 2.2f;  // for Transfer::kGamma
     // The sensor (film/sensor.h, pbrt-v4's film and sensor options): the imaging ratio is
     // exposure_time * iso / 100, exactly 1 with the defaults; white_balance is the colour
     // temperature (kelvin) of the daylight that becomes white, 0 for none.

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "candela/film/film_settings.h"
+#include "candela/image/display_encoding.h"
 #include "candela/image/image.h"
 
 namespace candela::image_formats {
@@ -37,11 +37,11 @@ void write_rgbe(const std::filesystem::path& file, const Image& image);
 // PNG (png_file.cpp): 8- or 16-bit, sRGB-decoded to linear on reading; written as 8-bit RGB
 // after the film's tone map and transfer curve.
 Image read_png(const std::filesystem::path& file);
-void write_png(const std::filesystem::path& file, const Image& image, const FilmSettings& film);
+void write_png(const std::filesystem::path& file, const Image& image, const DisplayEncoding& film);
 
 // Plain PPM (ppm_file.cpp), byte for byte as smallpt writes it: "P3\nW H\n255\n", then
 // "r g b " per pixel, tone mapped and encoded like PNG.
-void write_ppm(const std::filesystem::path& file, const Image& image, const FilmSettings& film);
+void write_ppm(const std::filesystem::path& file, const Image& image, const DisplayEncoding& film);
 
 // Largest accepted image: 65536 pixels per side and 2^28 pixels in all (3 GiB of RGB floats);
 // a header claiming more is far likelier corrupt than a real scene asset.

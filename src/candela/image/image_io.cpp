@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 namespace {
 
 using Reader = Image (*)(const fs::path&);
-using Writer = void (*)(const fs::path&, const Image&, const FilmSettings&);
+using Writer = void (*)(const fs::path&, const Image&, const DisplayEncoding&);
 
 struct ImageFormat {
     const char* extension;  // lower case, with the dot
@@ -28,11 +28,11 @@ struct ImageFormat {
 // The one table of formats, in the order error messages list them.
 constexpr ImageFormat kFormats[] = {
     {".exr", image_formats::read_exr,
-     [](const fs::path& f, const Image& i, const FilmSettings&) { image_formats::write_exr(f, i); }},
+     [](const fs::path& f, const Image& i, const DisplayEncoding&) { image_formats::write_exr(f, i); }},
     {".hdr", image_formats::read_rgbe,
-     [](const fs::path& f, const Image& i, const FilmSettings&) { image_formats::write_rgbe(f, i); }},
+     [](const fs::path& f, const Image& i, const DisplayEncoding&) { image_formats::write_rgbe(f, i); }},
     {".pfm", image_formats::read_pfm,
-     [](const fs::path& f, const Image& i, const FilmSettings&) { image_formats::write_pfm(f, i); }},
+     [](const fs::path& f, const Image& i, const DisplayEncoding&) { image_formats::write_pfm(f, i); }},
     {".png", image_formats::read_png, image_formats::write_png},
     {".ppm", nullptr, image_formats::write_ppm},
 };
@@ -101,7 +101,7 @@ Image read_image(const fs::path& file) {
     return image;
 }
 
-void write_image(const fs::path& file, const Image& image, const FilmSettings& film) {
+void write_image(const fs::path& file, const Image& image, const DisplayEncoding& film) {
     const ImageFormat* format = find_format(file, true);
     if (!format) image_formats::fail(file, extension_error(file, true));
     if (image.width <= 0 || image.height <= 0 ||

@@ -5,7 +5,7 @@
 // file in the same folder, then a rename, so a crash never leaves a half-written image.
 #include <filesystem>
 
-#include "candela/film/film_settings.h"
+#include "candela/image/display_encoding.h"
 #include "candela/image/image.h"
 
 namespace candela {
@@ -19,7 +19,7 @@ Image read_image(const std::filesystem::path& file);
 // Throws SceneError for an unknown extension (listing the known ones) or a failed write. The
 // last line of defence against bad pixels: throws RenderError, writing nothing, if the image has
 // a NaN or infinite value (the renderer guarantees none) or its size does not match its pixels.
-void write_image(const std::filesystem::path& file, const Image& image, const FilmSettings& film);
+void write_image(const std::filesystem::path& file, const Image& image, const DisplayEncoding& film);
 
 // True when the extension is one read_image knows (for checking scene files early).
 bool is_readable_image_extension(const std::filesystem::path& file);

@@ -32,7 +32,7 @@ fs::path layer_side_file(const fs::path& output, const ImageLayer& layer) {
 }
 
 void write_image_with_layers(const fs::path& file, const Image& image, const std::vector<ImageLayer>& layers,
-                             const FilmSettings& film) {
+                             const DisplayEncoding& film) {
     if (lower_extension(file) == ".exr" && !layers.empty()) {
         // write_image's last line of defence, for every layer.
         auto check = [&](const Image& i, const std::string& what) {
@@ -55,7 +55,7 @@ void write_image_with_layers(const fs::path& file, const Image& image, const std
         Image out = layer.image;
         if (layer.channels == 1)
             for (Rgb& p : out.pixels) p = Rgb(p.r);
-        FilmSettings encoding;  // albedo in 8 bits: clamped, sRGB
+        DisplayEncoding encoding;  // albedo in 8 bits: clamped, sRGB
         if (layer.name == "normal" && ext != ".pfm" && ext != ".exr") {
             for (Rgb& p : out.pixels) p = Rgb(p.r * 0.5f + 0.5f, p.g * 0.5f + 0.5f, p.b * 0.5f + 0.5f);
             encoding.transfer = Transfer::kGamma;  // linear: the value is the code

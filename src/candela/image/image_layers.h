@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "candela/film/film_settings.h"
+#include "candela/image/display_encoding.h"
 #include "candela/image/image.h"
 
 namespace candela {
@@ -20,7 +20,7 @@ std::filesystem::path layer_side_file(const std::filesystem::path& output, const
 // its layer_side_file. One-channel layers become grey in side files. Albedo in 8-bit formats is
 // clamped and sRGB-encoded, whatever the film's tone map; normals are encoded linearly.
 void write_image_with_layers(const std::filesystem::path& file, const Image& image,
-                             const std::vector<ImageLayer>& layers, const FilmSettings& film);
+                             const std::vector<ImageLayer>& layers, const DisplayEncoding& film);
 
 // An OpenEXR file's channel names, and up to three of its channels as an image's r, g, b (for
 // reading layers back). Throw SceneError naming the file.

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "candela/core/atomic_file.h"
-#include "candela/film/tonemap.h"
+#include "candela/image/tonemap.h"
 #include "candela/image/image_formats.h"
 
 namespace candela::image_formats {
@@ -70,7 +70,7 @@ Image read_png(const fs::path& file) {
     return to_linear(data.get(), width, height, [&](stbi_uc v) { return linear[v]; });
 }
 
-void write_png(const fs::path& file, const Image& image, const FilmSettings& film) {
+void write_png(const fs::path& file, const Image& image, const DisplayEncoding& film) {
     std::vector<unsigned char> display;
     display.reserve(image.pixels.size() * 3);
     for (const Rgb& p : image.pixels)

@@ -3,12 +3,12 @@
 #include <string>
 
 #include "candela/core/atomic_file.h"
-#include "candela/film/tonemap.h"
+#include "candela/image/tonemap.h"
 #include "candela/image/image_formats.h"
 
 namespace candela::image_formats {
 
-void write_ppm(const std::filesystem::path& file, const Image& image, const FilmSettings& film) {
+void write_ppm(const std::filesystem::path& file, const Image& image, const DisplayEncoding& film) {
     std::string out = "P3\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
     out.reserve(out.size() + image.pixels.size() * 12);
     for (const Rgb& p : image.pixels) {

@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "candela/film/film_settings.h"
-#include "candela/render/render_settings.h"
+#include "candela/scene/render_settings.h"
 #include "candela/render/tile.h"
 
 namespace candela {

@@ -13,10 +13,10 @@
 #include "candela/film/pixel_filter.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/lights/light_set.h"
-#include "candela/render/aov_tracer.h"
+#include "candela/integrators/aov_tracer.h"
 #include "candela/render/adaptive_sampling.h"
-#include "candela/render/integrator.h"
-#include "candela/render/renderer.h"
+#include "candela/integrators/integrator.h"
+#include "candela/render/frame_setup.h"
 #include "candela/sampling/sampler.h"
 #include "candela/scene/scene.h"
 

@@ -10,7 +10,7 @@
 
 #include "candela/film/aov_layers.h"
 #include "candela/film/film_settings.h"
-#include "candela/render/ray_counters.h"
+#include "candela/integrators/ray_counters.h"
 #include "candela/render/tile.h"
 
 namespace candela {

@@ -10,7 +10,7 @@
 
 #include "candela/film/film_settings.h"
 #include "candela/materials/metal_table.h"
-#include "candela/render/render_settings.h"
+#include "candela/scene/render_settings.h"
 
 namespace candela {
 

@@ -21,7 +21,7 @@
 #include "candela/materials/material.h"
 #include "candela/math/rgb.h"
 #include "candela/math/transform.h"
-#include "candela/render/render_settings.h"
+#include "candela/scene/render_settings.h"
 #include "candela/textures/texture_file.h"
 #include "candela/textures/texture_set.h"
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "candela/core/error.h"
-#include "candela/film/tonemap.h"
+#include "candela/image/tonemap.h"
 #include "candela/image/image_formats.h"
 #include "candela/image/image_io.h"
 

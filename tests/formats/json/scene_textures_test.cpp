@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "candela/film/tonemap.h"
+#include "candela/image/tonemap.h"
 #include "candela/scene/content_hash.h"
 #include "candela/scene/memory_budget.h"
 #include "candela/formats/json/scene_loader.h"

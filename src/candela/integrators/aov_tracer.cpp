@@ -1,0 +1,40 @@
+#include "candela/integrators/aov_tracer.h"
+
+#include <cmath>
+
+#include "candela/integrators/path_common.h"
+
+namespace candela {
+
+AovTracer::AovTracer(const Scene& scene, const Accelerator& accel) : scene_(scene), accel_(accel) {}
+
+AovSample AovTracer::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const {
+    AovSample aov{Rgb(0.0f), Vec3f(0.0f), kAovMissDepth, Vec3f(0.0f)};
+    Ray ray = camera_ray;
+    Rgb tint(1.0f);  // the specular chain's f |cos| / pdf so far
+    for (int vertex = 0; vertex < kMaxAovSpecularChain; ++vertex) {
+        ++counters.bounce;
+        const std::optional<SurfaceHit> hit = accel_.intersect(ray);
+        if (!hit) break;
+        if (vertex == 0) {
+            aov.depth = scene_.camera.near + hit->t;
+            aov.position = hit->p;
+        }
+        // RGB mode whatever the integrator's: the albedo layer is an RGB reflectance.
+        const PathVertex v(scene_, accel_, *hit, ray);
+        if (!v.bsdf.is_delta_only()) {
+            aov.albedo = tint * to_rgb(v.bsdf.albedo());
+            aov.normal = face_forward(v.frame.n, -ray.d);
+            break;
+        }
+        const float uc = sampler.next_float();
+        const Vec2f u = sampler.next_vec2f();
+        const std::optional<BsdfSample> bs = v.bsdf.sample(v.wo, uc, u, TransportMode::kRadiance);
+        if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) break;
+        tint = tint * to_rgb(bs->f * (std::abs(bs->wi.z) / bs->pdf));
+        ray = spawn_ray(v.hit, v.frame.to_world(bs->wi));
+    }
+    return aov;
+}
+
+}  // namespace candela

@@ -1,0 +1,42 @@
+#include "candela/integrators/integrator.h"
+
+#include <algorithm>
+
+#include "candela/core/error.h"
+#include "candela/lights/light_set.h"
+#include "candela/integrators/debug_integrators.h"
+#include "candela/integrators/transport_integrators.h"
+#include "candela/scene/scene.h"
+
+namespace candela {
+
+TransportIntegrator::TransportIntegrator(const Scene& scene, const Accelerator& accel, const LightSet& lights)
+    : scene_(scene),
+      accel_(accel),
+      lights_(lights),
+      any_material_uses_choice_(std::any_of(scene.materials.begin(), scene.materials.end(),
+                                            [](const Material& m) { return m.bsdf.uses_choice(); })),
+      spectral_(scene.integrator.spectral),
+      sensor_(make_sensor(scene.film)) {}
+
+std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Accelerator& accel, const LightSet& lights) {
+    const IntegratorSettings& s = scene.integrator;
+    switch (s.type) {
+        case IntegratorType::kPath: return std::make_unique<PathIntegrator>(scene, accel, lights);
+        case IntegratorType::kBsdf:
+            // It finds light only by hitting it, and no ray hits a point, spot or directional
+            // light: refused rather than rendered without them (the scene loader and the CLI
+            // refuse such scenes first, with their own messages).
+            if (lights.has_delta_lights())
+                throw RenderError("the bsdf integrator cannot see point, spot or directional lights");
+            return std::make_unique<BsdfIntegrator>(scene, accel, lights);
+        case IntegratorType::kWhitted: return std::make_unique<WhittedIntegrator>(scene, accel, lights);
+        case IntegratorType::kNormals: return std::make_unique<NormalsIntegrator>(accel);
+        case IntegratorType::kDepth: return std::make_unique<DepthIntegrator>(accel, scene.camera.near);
+        case IntegratorType::kAlbedo: return std::make_unique<AlbedoIntegrator>(scene, accel);
+        case IntegratorType::kAo: return std::make_unique<AoIntegrator>(accel, s.max_distance);
+    }
+    return nullptr;
+}
+
+}  // namespace candela
