@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
     if (argc == 4 && std::string(argv[1]) == "--write-block-means") {
         try {
             candela::write_image(argv[3], candela::bench::block_means(candela::read_image(argv[2]), 16),
-                                 candela::FilmSettings{});
+                                 candela::DisplayEncoding{});
             return 0;
         } catch (const std::exception& e) {
             fmt::print(stderr, "candela_compare_pbrt: {}\n", e.what());

@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
             for (int y = 0; y < images[k].height; ++y)
                 for (int x = 0; x < w; ++x)
                     sheet.at(k * (w + gap) + x, y) = images[k].at(x, y) * scales[size_t(k)];
-        candela::write_image(out, sheet, candela::FilmSettings{});
+        candela::write_image(out, sheet, candela::DisplayEncoding{});
         return 0;
     } catch (const std::exception& e) {
         fmt::print(stderr, "candela_side_by_side: {}\n", e.what());

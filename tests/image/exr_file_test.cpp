@@ -163,7 +163,7 @@ TEST(ExrFile, NoColourChannelIsAnError) {
 
 TEST(ExrFile, WritesZipCompressedFloatRgb) {
     TempDir dir;
-    write_image(dir / "out.exr", testing::pattern_image(3, 2), FilmSettings{});
+    write_image(dir / "out.exr", testing::pattern_image(3, 2), DisplayEncoding{});
     Imf::InputFile in((dir / "out.exr").c_str());
     EXPECT_EQ(in.header().compression(), Imf::ZIP_COMPRESSION);
     const Imf::ChannelList& channels = in.header().channels();

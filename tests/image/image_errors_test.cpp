@@ -59,7 +59,7 @@ TEST(ImageReadErrors, PpmIsWriteOnly) {
 
 TEST(ImageReadErrors, TruncatedPfm) {
     TempDir dir;
-    write_image(dir / "a.pfm", pattern_image(4, 3), FilmSettings{});
+    write_image(dir / "a.pfm", pattern_image(4, 3), DisplayEncoding{});
     std::string bytes = read_test_file(dir / "a.pfm");
     bytes.resize(bytes.size() - 5);
     write_test_file(dir / "a.pfm", bytes);
@@ -90,7 +90,7 @@ TEST(ImageReadErrors, GarbageExr) {
 
 TEST(ImageReadErrors, TruncatedExr) {
     TempDir dir;
-    write_image(dir / "a.exr", pattern_image(64, 64), FilmSettings{});
+    write_image(dir / "a.exr", pattern_image(64, 64), DisplayEncoding{});
     std::string bytes = read_test_file(dir / "a.exr");
     bytes.resize(bytes.size() / 2);
     write_test_file(dir / "a.exr", bytes);
@@ -113,7 +113,7 @@ TEST(ImageReadErrors, GarbageHdr) {
 TEST(ImageReadErrors, TruncatedHdr) {
     TempDir dir;
     for (int width : {5, 40}) {  // flat and run-length encoded rows
-        write_image(dir / "a.hdr", pattern_image(width, 6, 0.0f, 10.0f), FilmSettings{});
+        write_image(dir / "a.hdr", pattern_image(width, 6, 0.0f, 10.0f), DisplayEncoding{});
         std::string bytes = read_test_file(dir / "a.hdr");
         bytes.resize(bytes.size() - 10);
         write_test_file(dir / "a.hdr", bytes);
@@ -125,7 +125,7 @@ TEST(ImageReadErrors, GarbagePng) {
     TempDir dir;
     write_test_file(dir / "a.png", "GIF89a not a png");
     EXPECT_CONTAINS(read_error(dir / "a.png"), "not a PNG image");
-    write_image(dir / "b.png", pattern_image(20, 20), FilmSettings{});
+    write_image(dir / "b.png", pattern_image(20, 20), DisplayEncoding{});
     std::string bytes = read_test_file(dir / "b.png");
     bytes.resize(bytes.size() / 2);
     write_test_file(dir / "b.png", bytes);
@@ -155,7 +155,7 @@ TEST(ImageWriteErrors, RefusesNanAndInfinityAndWritesNothing) {
             Image image = pattern_image(3, 2);
             image.at(2, 1).b = bad;
             try {
-                write_image(dir / name, image, FilmSettings{});
+                write_image(dir / name, image, DisplayEncoding{});
                 ADD_FAILURE() << name << " was written with " << bad;
             } catch (const RenderError& e) {
                 EXPECT_CONTAINS(e.what(), "pixel (2, 1) is not finite");
@@ -168,7 +168,7 @@ TEST(ImageWriteErrors, RefusesNanAndInfinityAndWritesNothing) {
 TEST(ImageWriteErrors, UnknownExtensionListsWritableOnes) {
     TempDir dir;
     try {
-        write_image(dir / "a.tiff", pattern_image(2, 2), FilmSettings{});
+        write_image(dir / "a.tiff", pattern_image(2, 2), DisplayEncoding{});
         FAIL() << "expected SceneError";
     } catch (const SceneError& e) {
         EXPECT_EQ(e.where().file, (dir / "a.tiff").string());
@@ -182,7 +182,7 @@ TEST(ImageWriteErrors, MissingFolderThrowsAndLeavesNothing) {
     for (const char* name : {"a.exr", "a.pfm", "a.hdr", "a.png", "a.ppm"}) {
         const auto destination = dir / "missing" / name;
         try {
-            write_image(destination, pattern_image(2, 2), FilmSettings{});
+            write_image(destination, pattern_image(2, 2), DisplayEncoding{});
             ADD_FAILURE() << "expected SceneError for " << name;
         } catch (const SceneError& e) {
             EXPECT_EQ(e.where().file, destination.string());
@@ -196,8 +196,8 @@ TEST(ImageWriteErrors, InconsistentImageIsAnInternalError) {
     TempDir dir;
     Image image(3, 2);
     image.pixels.pop_back();
-    EXPECT_THROW(write_image(dir / "a.pfm", image, FilmSettings{}), RenderError);
-    EXPECT_THROW(write_image(dir / "a.pfm", Image{}, FilmSettings{}), RenderError);
+    EXPECT_THROW(write_image(dir / "a.pfm", image, DisplayEncoding{}), RenderError);
+    EXPECT_THROW(write_image(dir / "a.pfm", Image{}, DisplayEncoding{}), RenderError);
     EXPECT_TRUE(dir.entries().empty());
 }
 

@@ -44,7 +44,7 @@ TEST(ImageLayers, ExrHoldsEveryLayerUnderItsChannelNames) {
     const Image beauty = pattern_image(7, 5, 0.0f, 4.0f);
     const std::vector<ImageLayer> layers = sample_layers(7, 5);
     const auto file = dir / "out.exr";
-    write_image_with_layers(file, beauty, layers, FilmSettings{});
+    write_image_with_layers(file, beauty, layers, DisplayEncoding{});
     std::vector<std::string> names = read_exr_channel_names(file);
     std::sort(names.begin(), names.end());
     EXPECT_EQ(names, (std::vector<std::string>{"B", "G", "N.X", "N.Y", "N.Z", "P.X", "P.Y", "P.Z", "R", "Z",
@@ -65,7 +65,7 @@ TEST(ImageLayers, ExrHoldsEveryLayerUnderItsChannelNames) {
 TEST(ImageLayers, OtherFormatsWriteOneFileBesideThemPerLayer) {
     TempDir dir;
     const std::vector<ImageLayer> layers = sample_layers(6, 4);
-    write_image_with_layers(dir / "out.png", pattern_image(6, 4), layers, FilmSettings{});
+    write_image_with_layers(dir / "out.png", pattern_image(6, 4), layers, DisplayEncoding{});
     EXPECT_EQ(dir.entries(), (std::vector<std::string>{"out.albedo.png", "out.depth.pfm", "out.normal.png", "out.png",
                                                      "out.position.pfm"}));
     // Depth and position linear and exact; the one depth channel as grey.
@@ -89,7 +89,7 @@ TEST(ImageLayers, OtherFormatsWriteOneFileBesideThemPerLayer) {
 
     // A float output keeps normals as they are.
     TempDir pfm;
-    write_image_with_layers(pfm / "out.pfm", pattern_image(6, 4), layers, FilmSettings{});
+    write_image_with_layers(pfm / "out.pfm", pattern_image(6, 4), layers, DisplayEncoding{});
     EXPECT_EQ(read_image(pfm / "out.normal.pfm").pixels[0], Rgb(0.0f, 0.6f, -0.8f));
     EXPECT_EQ(pfm.entries(), (std::vector<std::string>{"out.albedo.pfm", "out.depth.pfm", "out.normal.pfm", "out.pfm",
                                                      "out.position.pfm"}));
@@ -107,7 +107,7 @@ TEST(ImageLayers, NonFiniteLayerIsNotWritten) {
     TempDir dir;
     std::vector<ImageLayer> layers = sample_layers(3, 2);
     layers[1].image.pixels[4] = Rgb(0.0f, std::nanf(""), 0.0f);
-    EXPECT_THROW(write_image_with_layers(dir / "out.exr", pattern_image(3, 2), layers, FilmSettings{}), RenderError);
+    EXPECT_THROW(write_image_with_layers(dir / "out.exr", pattern_image(3, 2), layers, DisplayEncoding{}), RenderError);
     EXPECT_TRUE(dir.entries().empty());
 }
 

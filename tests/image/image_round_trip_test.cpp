@@ -36,7 +36,7 @@ void expect_corners(const Image& image, float scale, float tolerance) {
     expect_near(image.width - 1, image.height - 1, Rgb(1.0f, 1.0f, 0.0f));
 }
 
-Image round_trip(const Image& image, const std::string& name, const FilmSettings& film = {}) {
+Image round_trip(const Image& image, const std::string& name, const DisplayEncoding& film = {}) {
     TempDir dir;
     write_image(dir / name, image, film);
     EXPECT_EQ(dir.entries(), std::vector<std::string>{name});  // no temporary left behind
@@ -92,7 +92,7 @@ TEST(RgbeRoundTrip, NegativeValuesBecomeZero) {
 
 TEST(PngRoundTrip, ReadsBackTheToneMappedEncodedValueDecoded) {
     for (Tonemap op : {Tonemap::kClamp, Tonemap::kReinhard}) {
-        FilmSettings film;
+        DisplayEncoding film;
         film.tonemap = op;
         Image image = pattern_image(7, 3, 0.0f, 1.5f);
         mark_corners(image, 1.0f);
@@ -121,7 +121,7 @@ TEST(PpmWrite, WritesSmallptPlainText) {
     Image image(2, 1);
     image.at(0, 0) = Rgb(1.0f, 0.0f, 0.0f);
     image.at(1, 0) = Rgb(0.0f, 0.5f, 4.0f);
-    write_image(dir / "out.ppm", image, FilmSettings{});  // clamp, sRGB: 0.5 -> 0.73536 -> 188
+    write_image(dir / "out.ppm", image, DisplayEncoding{});  // clamp, sRGB: 0.5 -> 0.73536 -> 188
     EXPECT_EQ(testing::read_test_file(dir / "out.ppm"), "P3\n2 1\n255\n255 0 0 0 188 255 ");
 }
 
@@ -129,7 +129,7 @@ TEST(PpmWrite, RowsRunTopToBottom) {
     TempDir dir;
     Image image(1, 2);
     image.at(0, 0) = Rgb(1.0f);
-    FilmSettings film;
+    DisplayEncoding film;
     film.transfer = Transfer::kGamma;
     write_image(dir / "out.PPM", image, film);
     EXPECT_EQ(testing::read_test_file(dir / "out.PPM"), "P3\n1 2\n255\n255 255 255 0 0 0 ");
@@ -137,9 +137,9 @@ TEST(PpmWrite, RowsRunTopToBottom) {
 
 TEST(ImageWrite, OverwritesAnExistingImage) {
     TempDir dir;
-    write_image(dir / "img.pfm", pattern_image(5, 4), FilmSettings{});
+    write_image(dir / "img.pfm", pattern_image(5, 4), DisplayEncoding{});
     const Image second = pattern_image(3, 2, 7.0f, 8.0f);
-    write_image(dir / "img.pfm", second, FilmSettings{});
+    write_image(dir / "img.pfm", second, DisplayEncoding{});
     const Image read = read_image(dir / "img.pfm");
     ASSERT_EQ(read.width, 3);
     ASSERT_EQ(read.height, 2);

@@ -34,7 +34,7 @@ TEST(PfmFile, WritesLittleEndianBottomRowFirst) {
     image.at(1, 0) = Rgb(4.0f, 5.0f, 6.0f);
     image.at(0, 1) = Rgb(7.0f, 8.0f, 9.0f);  // bottom-left: stored first
     image.at(1, 1) = Rgb(10.0f, 11.0f, 12.0f);
-    write_image(dir / "a.pfm", image, FilmSettings{});
+    write_image(dir / "a.pfm", image, DisplayEncoding{});
     const std::string expected =
         "PF\n2 2\n-1\n" + float_bytes({7, 8, 9, 10, 11, 12, 1, 2, 3, 4, 5, 6}, false);
     EXPECT_EQ(testing::read_test_file(dir / "a.pfm"), expected);

@@ -52,7 +52,7 @@ TEST(PngFile, AlphaIsDropped) {
 
 TEST(PngFile, WrittenBytesAreTheDisplayBytes) {
     TempDir dir;
-    FilmSettings film;
+    DisplayEncoding film;
     film.tonemap = Tonemap::kAces;
     const Image image = testing::pattern_image(5, 3, 0.0f, 4.0f);
     write_image(dir / "out.png", image, film);

@@ -9,17 +9,17 @@
 namespace candela {
 namespace {
 
-FilmSettings film_with(Tonemap tonemap, float exposure = 0.5f) {
-    FilmSettings film;
+DisplayEncoding film_with(Tonemap tonemap, float exposure = 0.5f) {
+    DisplayEncoding film;
     film.tonemap = tonemap;
     film.exposure = exposure;
     return film;
 }
 
-float mapped(float c, const FilmSettings& film) { return tonemap(Rgb(c), film).r; }
+float mapped(float c, const DisplayEncoding& film) { return tonemap(Rgb(c), film).r; }
 
 TEST(Tonemap, ClampCutsAtOneAndKeepsSmallerValues) {
-    const FilmSettings film = film_with(Tonemap::kClamp);
+    const DisplayEncoding film = film_with(Tonemap::kClamp);
     EXPECT_EQ(mapped(0.0f, film), 0.0f);
     EXPECT_EQ(mapped(0.25f, film), 0.25f);
     EXPECT_EQ(mapped(1.0f, film), 1.0f);
@@ -29,7 +29,7 @@ TEST(Tonemap, ClampCutsAtOneAndKeepsSmallerValues) {
 
 TEST(Tonemap, ExposureFollowsTheSeedFormula) {
     for (float exposure : {0.0f, 0.5f, 0.9f}) {
-        const FilmSettings film = film_with(Tonemap::kExposure, exposure);
+        const DisplayEncoding film = film_with(Tonemap::kExposure, exposure);
         EXPECT_EQ(mapped(0.0f, film), 0.0f);
         for (float c : {0.1f, 1.0f, 3.0f})
             EXPECT_NEAR(mapped(c, film), 1.0 - std::exp(-double(c) / (1.0 - double(exposure))), 1e-6) << c;
@@ -40,7 +40,7 @@ TEST(Tonemap, ExposureFollowsTheSeedFormula) {
 }
 
 TEST(Tonemap, ReinhardMapsOneToHalf) {
-    const FilmSettings film = film_with(Tonemap::kReinhard);
+    const DisplayEncoding film = film_with(Tonemap::kReinhard);
     EXPECT_EQ(mapped(0.0f, film), 0.0f);
     EXPECT_FLOAT_EQ(mapped(1.0f, film), 0.5f);
     EXPECT_FLOAT_EQ(mapped(3.0f, film), 0.75f);
@@ -49,7 +49,7 @@ TEST(Tonemap, ReinhardMapsOneToHalf) {
 }
 
 TEST(Tonemap, AcesMatchesNarkowiczFit) {
-    const FilmSettings film = film_with(Tonemap::kAces);
+    const DisplayEncoding film = film_with(Tonemap::kAces);
     EXPECT_EQ(mapped(0.0f, film), 0.0f);
     EXPECT_NEAR(mapped(0.18f, film), 0.2668989f, 1e-6f);   // 0.086724 / 0.324932
     EXPECT_NEAR(mapped(1.0f, film), 2.54f / 3.16f, 1e-6f);  // (2.51 + 0.03) / (2.43 + 0.59 + 0.14)
@@ -83,7 +83,7 @@ TEST(Transfer, DecodeSrgbInvertsEncode) {
 }
 
 TEST(Transfer, GammaRaisesToOneOverGamma) {
-    FilmSettings film;
+    DisplayEncoding film;
     film.transfer = Transfer::kGamma;
     film.gamma = 2.2f;
     EXPECT_EQ(encode_transfer(0.0f, film), 0.0f);
@@ -105,7 +105,7 @@ TEST(Display, QuantizeRoundsToNearestAndClamps) {
 }
 
 TEST(Display, ClampWithGammaMatchesSmallptToInt) {
-    FilmSettings film;
+    DisplayEncoding film;
     film.tonemap = Tonemap::kClamp;
     film.transfer = Transfer::kGamma;
     film.gamma = 2.2f;
@@ -119,7 +119,7 @@ TEST(Display, ClampWithGammaMatchesSmallptToInt) {
 }
 
 TEST(Display, BytesApplyTonemapThenTransferPerChannel) {
-    FilmSettings film;
+    DisplayEncoding film;
     film.tonemap = Tonemap::kReinhard;
     film.transfer = Transfer::kSrgb;
     const auto bytes = to_display_bytes(Rgb(0.0f, 1.0f, 1e9f), film);

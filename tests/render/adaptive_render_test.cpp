@@ -13,6 +13,7 @@
 #include "candela/core/error.h"
 #include "candela/film/pixel_statistics.h"
 #include "candela/render/adaptive_sampling.h"
+#include "candela/render/pass_engine.h"
 #include "candela/render/renderer.h"
 #include "support/test_scenes.h"
 

@@ -123,7 +123,7 @@ TEST(TextureFile, FloatFormatsAreReadLinearAsImageIo) {
     image.at(0, 0) = Rgb(0.25f, 1.5f, 7.0f);
     image.at(1, 0) = Rgb(0.0f, 0.125f, 100.0f);
     for (const char* name : {"values.exr", "values.hdr", "values.pfm"}) {
-        write_image(dir / name, image, FilmSettings{});
+        write_image(dir / name, image, DisplayEncoding{});
         const Image expected = read_image(dir / name);
         const TextureImage texture = read_texture_file(dir / name, TextureColorspace::kLinear);
         ASSERT_EQ(texture.channels, 3) << name;
@@ -173,7 +173,7 @@ TEST(TextureFile, HeaderGivesSizeChannelsAndStorage) {
     EXPECT_EQ(deep->channels, 2);
     EXPECT_EQ(deep->bytes_per_channel, 4);  // 16-bit values are kept as floats
     Image one(1, 1);
-    write_image(dir / "one.exr", one, FilmSettings{});
+    write_image(dir / "one.exr", one, DisplayEncoding{});
     EXPECT_FALSE(read_texture_file_header(dir / "one.exr"));
 }
 
