@@ -34,7 +34,7 @@ void apply_adaptive_options(const AdaptiveArgs& args, RenderOptions& options);
 
 // Refuses --target-error with --shard: a whole-image target is not met by parts that each stop on
 // their own pixels' estimate (docs/CLUSTER.md). Adaptive sampling and the variance and spp layers
-// do run with --shard: part files carry the film's statistics (render/shard_part.h).
+// do run with --shard: part files carry the film's statistics (render/job/shard_part.h).
 void check_target_error_alone(const RenderOptions& options);
 
 // Refuses (SceneError naming `checkpoint`) a resumed film without the statistics the render needs.

@@ -1,6 +1,6 @@
 #pragma once
 // `candela merge part-*.ckpt -o out.exr`: puts the part files of `candela render --shard I/N`
-// together and writes the images one render of the whole image would (render/shard_merge.h).
+// together and writes the images one render of the whole image would (render/job/shard_merge.h).
 #include <CLI/CLI.hpp>
 
 #include <string>

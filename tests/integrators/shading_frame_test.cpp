@@ -1,5 +1,5 @@
 // The shading frame of materials with normal maps, bump maps or anisotropic lobes
-// (render/shading_frame.h): the perturbed normal points where the maps' math says.
+// (integrators/shading_frame.h): the perturbed normal points where the maps' math says.
 #include <gtest/gtest.h>
 
 #include <cmath>

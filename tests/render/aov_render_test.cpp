@@ -1,4 +1,4 @@
-// AOV layers (film/aov_layers.h, render/aov_tracer.h) on scenes whose albedo, normals and depth
+// AOV layers (film/aov_layers.h, integrators/aov_tracer.h) on scenes whose albedo, normals and depth
 // are known: a diffuse plane facing the camera, the same seen in a mirror, and nothing at all;
 // filtered and averaged exactly like the beauty image; the same across stop and resume; and the
 // beauty image the same bits with or without them.

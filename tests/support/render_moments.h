@@ -50,7 +50,7 @@ struct RenderMoments {
     int width = 0;
     int height = 0;
     uint32_t spp = 0;
-    uint64_t dropped = 0;                      // non-finite samples (counted as zero, as render() does)
+    uint64_t dropped = 0;                      // non-finite samples (counted as zero: FrameRenderer's rule)
     std::vector<std::array<double, 3>> sum;    // per pixel and channel, in sample-index order
     std::vector<std::array<double, 3>> sum_sq;
 
@@ -72,7 +72,7 @@ struct RenderMoments {
     }
 };
 
-// Renders `scene` as render() does, keeping per-pixel sums of samples and of their squares.
+// Takes the samples render() takes, one by one, keeping per-pixel sums of samples and of their squares.
 // `for_variance` false: only image() will be used (any sampler).
 inline RenderMoments render_moments(const Scene& scene, bool for_variance = true) {
     if (for_variance && scene.sampler.type != SamplerType::kIndependent)

@@ -86,7 +86,7 @@ struct PrefixSums {
     }
 };
 
-// One camera sample's AOV values (render/aov_tracer.h): what the film sums for the AOV layers.
+// One camera sample's AOV values (integrators/aov_tracer.h): what the film sums for the AOV layers.
 struct AovSample {
     Rgb albedo;      // at the first non-specular vertex, times the specular chain's tint
     Vec3f normal;    // shading normal there, world space, facing the ray; 0 on a miss

@@ -22,8 +22,8 @@ namespace candela {
 // An untextured material's BSDF is read in place; a textured one is built here from the texture
 // values at the hit (materials/material.h), which needs the hit's surface coordinates. The frame
 // is Frame::from_normal(ns) unless the material maps the normal or has anisotropic lobes; those
-// ask the accelerator for the surface's parametrization (render/shading_frame.h). A blend first
-// chooses the part that shades here (render/material_choice.h).
+// ask the accelerator for the surface's parametrization (integrators/shading_frame.h). A blend first
+// chooses the part that shades here (integrators/material_choice.h).
 struct PathVertex {
     const SurfaceHit& hit;
     const Material* material;  // the material that shades here: the shape's, or a blend's part

@@ -22,7 +22,7 @@ struct Bsdf {
     // alternative). The constructor is user-provided so that value-initialization does not add
     // a zeroing of the whole object; GCC 12's std::variant still zero-fills each alternative's
     // storage (416 bytes in all), which is why spectral mode keeps the BSDFs of untextured
-    // materials for the whole path (render/spectral_bsdf_cache.h) instead of building one per hit.
+    // materials for the whole path (integrators/spectral_bsdf_cache.h) instead of building one per hit.
     std::array<BsdfLobe, kMaxLobes> lobes;
     uint32_t lobe_count = 0;
 

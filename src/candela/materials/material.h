@@ -24,7 +24,7 @@ struct Material {
     Bsdf bsdf;  // the lobes at the parameters' constant values (all of them when !textured)
     std::array<LobeParams, Bsdf::kMaxLobes> params{};  // lobe k of bsdf comes from params[k]
     bool textured = false;  // some parameter is a texture: use build_bsdf at each hit
-    // The shading frame needs the surface's parametrization (render/shading_frame.h): some lobe
+    // The shading frame needs the surface's parametrization (integrators/shading_frame.h): some lobe
     // is anisotropic, or `surface` maps the normal. Kept by set_surface and make_material.
     bool needs_shading_geometry = false;
     // textured || needs_shading_geometry || blend: the one flag the path tracer tests at every

@@ -1,6 +1,6 @@
 #pragma once
 // What a material does to the surface rather than to the light it scatters, on any material
-// type: a normal map or a bump map (the shading normal, render/shading_frame.h) and alpha (how
+// type: a normal map or a bump map (the shading normal, integrators/shading_frame.h) and alpha (how
 // much of the surface is there at all; the accelerator's cutouts, geometry/alpha_cutout.h).
 #include <cstdint>
 #include <optional>

@@ -43,7 +43,7 @@ struct SampleContext {
 // numbers are a pure function of (pixel, s, seed), so the sum is the same whichever thread
 // computes it and however the samples are split into passes. The filter's request comes first,
 // then the camera's lens point if it has a lens (camera_model.h). WithAovs: the sample's AOV
-// values (render/aov_tracer.h) are added, with the same filter weight, to pixel `film_pixel` of
+// values (integrators/aov_tracer.h) are added, with the same filter weight, to pixel `film_pixel` of
 // `to`, after the radiance has taken its random numbers; a sample whose radiance is dropped keeps
 // its AOV values, which are always finite. Statistics: the value's square is also added to
 // `squares` (a dropped sample counts as zero there too; the caller counts samples).

@@ -15,7 +15,7 @@
 // than computed: it still takes its place in the order. What is skipped is known before the
 // bounce's ray is traced (the light choice with a single light, the lobe choice when no material
 // reads it, roulette before rr_depth), so the integrators draw a bounce's numbers first and the
-// CPU computes them while Embree traverses (render/path_common.h).
+// CPU computes them while Embree traverses (integrators/path_common.h).
 //
 // Two kinds (scene key sampler.type):
 //  - independent: PCG32 from Rng::for_sample(pixel, sample, seed), as before: every number

@@ -51,7 +51,7 @@ TEST(SceneMaterials, RoughnessPairIsAlphaAlongUThenV) {
 }
 
 TEST(SceneMaterials, OnlyARoughnessPairThatDiffersMakesTheMaterialAnisotropic) {
-    // An anisotropic lobe needs the frame's x axis along dpdu (render/shading_frame.h).
+    // An anisotropic lobe needs the frame's x axis along dpdu (integrators/shading_frame.h).
     const char* conductor = R"({"type": "conductor", "eta": 1, "k": 1, "roughness": )";
     EXPECT_TRUE(load_material(std::string(conductor) + "[0.05, 0.4]}").materials[0].anisotropic);
     EXPECT_FALSE(load_material(std::string(conductor) + "[0.2, 0.2]}").materials[0].anisotropic);
