@@ -37,7 +37,7 @@ void hit_to_world(const Instance& instance, SurfaceHit& hit) {
         magnitude = std::max(magnitude, pr);
     }
     hit.p = Vec3f(instance.to_world.apply_point(p));
-    // Isotropic, as the accelerator's own bounds (docs/ARCHITECTURE.md, "Hit error bounds").
+    // Isotropic, as the accelerator's own bounds (docs/decisions/0002-error-bounded-ray-offsets.md).
     hit.p_error = Vec3f(float(carried * (1.0 + double(rounding_gamma(3))) + magnitude * double(rounding_gamma(3))));
     // Normals by the inverse transpose; the geometric one then agrees with the shading one again,
     // as a directly placed mesh's does (pbrt's rule), should a shear have moved them apart.

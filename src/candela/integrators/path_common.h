@@ -46,7 +46,7 @@ struct PathVertex {
     // One flag per vertex for materials without textures, maps, anisotropy or blends (the Cornell
     // box's): Material::per_hit, tested twice, which the compiler merges on the plain path
     // (+0.07% instructions in the path loop, where testing textured and needs_shading_geometry
-    // cost +0.8%: docs/ARCHITECTURE.md). A textured, mapped material asks for its uv twice. A
+    // cost +0.8%: docs/decisions/0012-shading-geometry-on-request.md). A textured, mapped material asks for its uv twice. A
     // blend (per_hit too) replaces `material` by its chosen part in per_hit_bsdf, before the
     // frame is made from it (per_hit_frame takes any material).
     PathVertex(const Scene& scene, const Accelerator& accel, const SurfaceHit& h, const Ray& ray, uint32_t mi)
