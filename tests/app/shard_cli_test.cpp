@@ -257,11 +257,16 @@ TEST(ShardCli, AdaptiveSettingsMustMatchToMergeOrResume) {
     expect_one_line_error(resume, dir,
                           p[0] + ": cannot resume: the checkpoint used adaptive sampling with threshold 0.1 and "
                                  "min_spp 4, this render adaptive sampling with threshold 0.2 and min_spp 4");
-    resume = {"render", kCornell, "--resolution", "40x24", "--spp", "16", "--shard", "1/2", "--resume", p[0],
-              "-o", p[0]};
+    resume = {"render", kCornell, "--resolution", "40x24", "--spp", "16", "--min-spp", "6", "--shard", "1/2",
+              "--resume", p[0], "-o", p[0]};
     expect_one_line_error(resume, dir,
                           p[0] + ": cannot resume: the checkpoint used adaptive sampling with threshold 0.1 and "
-                                 "min_spp 4, this render no adaptive sampling");
+                                 "min_spp 4, this render adaptive sampling with threshold 0.1 and min_spp 6 "
+                                 "(--min-spp 6; without it the render takes the checkpoint's)");
+    // Without the flags the part's own adaptive settings (and resolution) are taken.
+    resume = {"render", kCornell, "--spp", "16", "--shard", "1/2", "--resume", p[0], "-o", p[0]};
+    const CliRun resumed = run(resume, dir / "resumed.log");
+    EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
     // A whole-image target is no part's: refused with --shard.
     expect_one_line_error({"render", kCornell, "--resolution", "40x24", "--target-error", "0.01", "--shard", "1/2",
                            "-o", odd},

@@ -31,6 +31,14 @@ std::vector<uint64_t> MpiSession::gather(uint64_t value) const {
     return all;
 }
 
+std::string MpiSession::broadcast(std::string bytes) const {
+    uint64_t size = bytes.size();
+    MPI_Bcast(&size, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    bytes.resize(size);
+    MPI_Bcast(bytes.data(), int(size), MPI_CHAR, 0, MPI_COMM_WORLD);
+    return bytes;
+}
+
 void MpiSession::abort(int exit_code) const {
     MPI_Abort(MPI_COMM_WORLD, exit_code);
     std::_Exit(exit_code);  // MPI_Abort does not return; this is for the compiler

@@ -25,6 +25,9 @@ class MpiSession {
     // rank must call it.
     std::vector<uint64_t> gather(uint64_t value) const;
 
+    // Rank 0's `bytes`, on every rank (what the others pass is ignored). Collective.
+    std::string broadcast(std::string bytes) const;
+
     // Ends every rank of the job at once with `exit_code` (MPI_Abort): for an error on one rank
     // that the others cannot know of, instead of leaving them waiting.
     [[noreturn]] void abort(int exit_code) const;

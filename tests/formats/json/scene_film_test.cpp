@@ -110,7 +110,7 @@ TEST(SceneLoaderFilm, BadCropWindowsAreLocatedErrors) {
 }
 
 // `filename` (pbrt-v4's Film "filename") names the default output image; the CLI's -o overrides it
-// (apps/candela/render_command.cpp).
+// (the render job: render/job/job.cpp).
 TEST(SceneLoaderFilm, FilenameIsTheDefaultOutput) {
     EXPECT_EQ(load_json("{}").output_file, "");
     EXPECT_EQ(load_json(R"({"film": {"filename": "out/cbox.exr"}})").output_file, "out/cbox.exr");

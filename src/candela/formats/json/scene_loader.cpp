@@ -211,7 +211,7 @@ CameraBasis read_camera_basis(const JsonCursor& v) {
     return basis;
 }
 
-void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget& budget) {
+void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget* budget) {
     if (auto type = c.get("type"))
         camera.type = enum_of<CameraType>(type->choice("camera type", kCameraTypes), kCameraTypes);
     if (auto transform = c.get("transform")) {
@@ -236,7 +236,7 @@ void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget& budget) {
         auto wh = v->elements(2, "an array of 2 integers [width, height]");
         camera.width = wh[0].integer(Bounds::closed(1, kMaxResolution));
         camera.height = wh[1].integer(Bounds::closed(1, kMaxResolution));
-        check_film_memory(camera, *v, budget);
+        if (budget) check_film_memory(camera, *v, *budget);
     }
     if (auto v = c.get("near")) camera.near = v->number_f(Bounds::at_least(0));
     read_lens(c, camera);
@@ -371,9 +371,9 @@ Scene load_scene_from_string(std::string_view json, const std::filesystem::path&
     if (auto c = root.get("integrator")) read_integrator(*c, scene.integrator);
     if (auto c = root.get("sampler")) read_sampler(*c, scene.sampler);
     std::optional<JsonCursor> camera = root.get("camera");
-    if (camera) read_camera(*camera, scene.camera, budget);
-    if (budget.used() == 0) check_film_memory(scene.camera, camera ? *camera : root, budget);
-    if (scene.sampler.adaptive)
+    if (camera) read_camera(*camera, scene.camera, options.charge_film ? &budget : nullptr);
+    if (options.charge_film && budget.used() == 0) check_film_memory(scene.camera, camera ? *camera : root, budget);
+    if (options.charge_film && scene.sampler.adaptive)
         if (auto refused = budget.charge(film_statistics_memory_bytes(scene.camera.width, scene.camera.height),
                                          "the adaptive sampler's per-pixel statistics"))
             root.get("sampler")->get("adaptive")->fail(*refused);

@@ -25,6 +25,10 @@ struct LoadOptions {
     // For a scene translated from another file (a pbrt-v4 scene): where the element at a JSON
     // pointer came from, so that errors point into that file; nullopt for "unknown here".
     std::function<std::optional<SourceLocation>(const std::string& pointer)> source_map;
+    // Charge the film (and the adaptive sampler's statistics) at the scene's resolution. False
+    // when the caller renders at a resolution it sets after loading (a render job's --resolution,
+    // a checkpoint's): it then checks the whole scene once that is set (memory_refusal).
+    bool charge_film = true;
 };
 
 // Reads and loads `file`; the location of errors names it as given. Throws SceneError for a

@@ -1,0 +1,238 @@
+// The render job (render/job/job.h) in process: checkpoints, stops, resumes and shards give the
+// bits of one uninterrupted render, and a resumed job takes the settings its checkpoint records.
+// Exact comparisons throughout: the images' floats and the written files' bytes.
+#include "candela/render/job/job.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "candela/core/error.h"
+#include "candela/render/job/shard_merge.h"
+#include "support/test_files.h"
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+using test::fresh_dir;
+using test::read_bytes;
+
+const fs::path kCornell = fs::path(CANDELA_SOURCE_DIR) / "scenes/cornell-box/scene.json";
+
+// A small render of the Cornell box into `dir`.
+RenderJobOptions small_job(const fs::path& dir, const std::string& output, int spp) {
+    RenderJobOptions o;
+    o.scene = kCornell;
+    o.overrides.resolution = Resolution{24, 16};
+    o.overrides.spp = spp;
+    o.outputs = {dir / output};
+    o.threads = 2;
+    return o;
+}
+
+bool same_bits(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Rgb)) == 0;
+}
+
+// Stops the job (as SIGINT would) once its first pass is complete.
+void stop_after_first_pass(RenderJobOptions& o, const std::shared_ptr<std::atomic<bool>>& passed) {
+    o.on_pass = [passed](const RenderState&) { *passed = true; };
+    o.stop = [passed] { return *passed ? SIGINT : 0; };
+}
+
+SceneError job_error(const RenderJobOptions& o) {
+    try {
+        run_render_job(o);
+    } catch (const SceneError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "the job did not throw";
+    return SceneError({}, "");
+}
+
+TEST(RenderJob, CheckpointedRenderResumesBitIdentically) {
+    const fs::path dir = fresh_dir("job_checkpoint");
+    const RenderJobResult whole = run_render_job(small_job(dir, "whole.pfm", 8));
+    ASSERT_EQ(whole.render.end, RenderEnd::kComplete);
+    EXPECT_FALSE(whole.checkpoint) << "no checkpoint was asked for";
+
+    RenderJobOptions first = small_job(dir, "first.pfm", 4);
+    first.checkpoint = dir / "ck.ckpt";
+    const RenderJobResult r = run_render_job(first);
+    ASSERT_EQ(r.checkpoint, dir / "ck.ckpt");
+    EXPECT_EQ(r.images, std::vector<fs::path>{dir / "first.pfm"});
+
+    RenderJobOptions resume = small_job(dir, "resumed.pfm", 8);
+    resume.resume = dir / "ck.ckpt";
+    const RenderJobResult resumed = run_render_job(resume);
+    EXPECT_EQ(resumed.render.state.samples_done, 8u);
+    EXPECT_TRUE(same_bits(resumed.render.image, whole.render.image));
+    EXPECT_EQ(read_bytes(dir / "resumed.pfm"), read_bytes(dir / "whole.pfm"));
+    EXPECT_EQ(resumed.checkpoint, dir / "resumed.pfm.ckpt") << "a resumed render can be taken further";
+}
+
+TEST(RenderJob, StopWritesACheckpointThatResumesBitIdentically) {
+    const fs::path dir = fresh_dir("job_stop");
+    const RenderJobResult whole = run_render_job(small_job(dir, "whole.pfm", 8));
+
+    RenderJobOptions stopped = small_job(dir, "stopped.pfm", 8);
+    stop_after_first_pass(stopped, std::make_shared<std::atomic<bool>>(false));
+    const RenderJobResult r = run_render_job(stopped);
+    EXPECT_EQ(r.render.end, RenderEnd::kStopped);
+    EXPECT_EQ(r.stop_signal, SIGINT);
+    EXPECT_EQ(r.exit_code, 128 + SIGINT);
+    EXPECT_GT(r.render.state.samples_done, 0u);
+    EXPECT_LT(r.render.state.samples_done, 8u);
+    ASSERT_EQ(r.checkpoint, dir / "stopped.pfm.ckpt") << "a stopped render always writes its checkpoint";
+    EXPECT_TRUE(fs::exists(dir / "stopped.pfm"));
+
+    RenderJobOptions resume = small_job(dir, "resumed.pfm", 8);
+    resume.resume = *r.checkpoint;
+    const RenderJobResult resumed = run_render_job(resume);
+    EXPECT_EQ(resumed.render.end, RenderEnd::kComplete);
+    EXPECT_EQ(resumed.exit_code, 0);
+    EXPECT_TRUE(same_bits(resumed.render.image, whole.render.image));
+    EXPECT_EQ(read_bytes(dir / "resumed.pfm"), read_bytes(dir / "whole.pfm"));
+}
+
+TEST(RenderJob, ShardPartsMergeIntoTheWholeImage) {
+    const fs::path dir = fresh_dir("job_shards");
+    const RenderJobResult whole = run_render_job(small_job(dir, "whole.pfm", 4));
+    std::vector<fs::path> parts;
+    for (int i = 1; i <= 2; ++i) {
+        RenderJobOptions part = small_job(dir, "part" + std::to_string(i) + ".ckpt", 4);
+        part.shard = Shard{i, 2};
+        const RenderJobResult r = run_render_job(part);
+        EXPECT_EQ(r.checkpoint, part.outputs.front());
+        EXPECT_TRUE(r.images.empty()) << "a part writes no image";
+        parts.push_back(part.outputs.front());
+    }
+    const MergedRender merged = merge_shard_parts(parts);
+    EXPECT_TRUE(same_bits(merged.state.film.resolve(merged.state.samples_done), whole.render.image));
+}
+
+// A stopped part resumes to the samples its file records, without --spp, and still merges.
+TEST(RenderJob, StoppedShardPartResumesToItsTargetSpp) {
+    const fs::path dir = fresh_dir("job_shard_resume");
+    const RenderJobResult whole = run_render_job(small_job(dir, "whole.pfm", 8));
+    RenderJobOptions first = small_job(dir, "part1.ckpt", 8);
+    first.shard = Shard{1, 2};
+    stop_after_first_pass(first, std::make_shared<std::atomic<bool>>(false));
+    ASSERT_EQ(run_render_job(first).render.end, RenderEnd::kStopped);
+    RenderJobOptions resume = first;
+    resume.overrides = {};
+    resume.resume = first.outputs.front();
+    resume.stop = [] { return 0; };
+    const RenderJobResult resumed = run_render_job(resume);
+    EXPECT_EQ(resumed.spp, 8);
+    EXPECT_EQ(resumed.render.state.samples_done, 8u);
+    RenderJobOptions second = small_job(dir, "part2.ckpt", 8);
+    second.shard = Shard{2, 2};
+    run_render_job(second);
+    const MergedRender merged = merge_shard_parts({dir / "part1.ckpt", dir / "part2.ckpt"});
+    EXPECT_TRUE(same_bits(merged.state.film.resolve(merged.state.samples_done), whole.render.image));
+}
+
+// `--resume ck.ckpt` alone continues the render the checkpoint holds: its resolution, seed,
+// sampler, integrator, AOV layers and adaptive settings, not the scene file's.
+TEST(RenderJob, ResumeTakesTheCheckpointsSettings) {
+    const fs::path dir = fresh_dir("job_takes_settings");
+    RenderJobOptions settings = small_job(dir, "whole.exr", 12);
+    settings.overrides.seed = 7;
+    settings.overrides.sampler = SamplerType::kIndependent;
+    settings.overrides.integrator = IntegratorType::kWhitted;
+    settings.overrides.aovs = AovLayers{};
+    settings.overrides.aovs->add(AovLayer::kAlbedo);
+    settings.overrides.noise_threshold = 0.2;
+    settings.overrides.min_spp = 4;
+    const RenderJobResult whole = run_render_job(settings);
+
+    RenderJobOptions first = settings;
+    first.outputs = {dir / "first.exr"};
+    first.overrides.spp = 4;
+    first.checkpoint = dir / "ck.ckpt";
+    ASSERT_EQ(run_render_job(first).checkpoint, dir / "ck.ckpt");
+
+    RenderJobOptions resume;
+    resume.scene = kCornell;
+    resume.overrides.spp = 12;  // continue up to 12
+    resume.outputs = {dir / "resumed.exr"};
+    resume.resume = dir / "ck.ckpt";
+    const RenderJobResult resumed = run_render_job(resume);
+    EXPECT_EQ(resumed.width, 24);
+    EXPECT_EQ(resumed.height, 16);
+    EXPECT_EQ(resumed.integrator, "whitted");
+    EXPECT_TRUE(same_bits(resumed.render.image, whole.render.image));
+    EXPECT_EQ(read_bytes(dir / "resumed.exr"), read_bytes(dir / "whole.exr"));
+}
+
+TEST(RenderJob, ResumeRefusesAFlagThatContradictsTheCheckpointByName) {
+    const fs::path dir = fresh_dir("job_contradicts");
+    RenderJobOptions first = small_job(dir, "first.pfm", 2);
+    first.checkpoint = dir / "ck.ckpt";
+    run_render_job(first);
+
+    RenderJobOptions resume = small_job(dir, "resumed.pfm", 4);
+    resume.resume = dir / "ck.ckpt";
+    resume.overrides.resolution = Resolution{30, 30};
+    SceneError e = job_error(resume);
+    EXPECT_EQ(e.where().file, (dir / "ck.ckpt").string());
+    EXPECT_EQ(e.message(), "cannot resume: the checkpoint is 24x16, this render 30x30 (--resolution 30x30; without it "
+                           "the render takes the checkpoint's)");
+
+    resume.overrides.resolution.reset();
+    resume.overrides.seed = 3;
+    e = job_error(resume);
+    EXPECT_EQ(e.where().file, (dir / "ck.ckpt").string());
+    EXPECT_NE(e.message().find("(--seed 3; "), std::string::npos) << e.message();
+    resume.overrides.seed.reset();
+    resume.overrides.noise_threshold = 0.1;
+    e = job_error(resume);
+    EXPECT_NE(e.message().find("this render adaptive sampling with threshold 0.1 and min_spp 16 (--noise-threshold "
+                               "0.1; "),
+              std::string::npos)
+        << e.message();
+}
+
+TEST(RenderJob, StoppedBeforeTheFirstPassWritesNothing) {
+    const fs::path dir = fresh_dir("job_stopped_at_once");
+    RenderJobOptions o = small_job(dir, "x.pfm", 4);
+    o.stop = [] { return SIGTERM; };
+    const RenderJobResult r = run_render_job(o);
+    EXPECT_EQ(r.render.end, RenderEnd::kStopped);
+    EXPECT_EQ(r.exit_code, 128 + SIGTERM);
+    EXPECT_TRUE(r.images.empty());
+    EXPECT_FALSE(r.checkpoint);
+    EXPECT_FALSE(fs::exists(dir / "x.pfm"));
+}
+
+// The overrides apply before the memory check, which happens once, at the resolution rendered: a
+// scene file too large for the limit renders at a --resolution that fits.
+TEST(RenderJob, MemoryIsCheckedAtTheResolutionRendered) {
+    const fs::path dir = fresh_dir("job_memory");
+    const fs::path scene = dir / "scene.json";
+    std::ofstream(scene) << R"({"camera": {"resolution": [32768, 32768]},
+        "materials": {"m": {"type": "diffuse"}},
+        "shapes": [{"type": "sphere", "center": [0, 0, 4], "radius": 1, "material": "m"}],
+        "lights": [{"type": "environment", "color": [1, 1, 1]}]})";
+    RenderJobOptions o;
+    o.scene = scene;
+    o.memory_limit = MemoryLimit{uint64_t(1) << 30, "the test's limit is"};
+    o.outputs = {dir / "x.pfm"};
+    const SceneError refused = job_error(o);
+    EXPECT_EQ(refused.where().json_pointer, "/camera/resolution");
+    EXPECT_EQ(refused.message().rfind("a 32768x32768 film needs about", 0), 0u) << refused.message();
+    o.overrides.resolution = Resolution{8, 8};
+    o.overrides.spp = 1;
+    EXPECT_EQ(run_render_job(o).images, std::vector<fs::path>{dir / "x.pfm"});
+}
+
+}  // namespace
+}  // namespace candela
