@@ -123,7 +123,9 @@ void print_summary(const RenderJobResult& r, const std::string& stopped) {
 }  // namespace
 
 int run_render(const RenderArgs& a) {
-    const RenderJobResult r = run_render_job(job_options(a));
+    const RenderJobOptions options = job_options(a);
+    const JobRanks ranks;  // this process alone, or MPI for as long as the result is printed
+    const RenderJobResult r = run_render_job(options, ranks.session());
     if (!r.root) return r.exit_code;
     const std::string stopped = stop_reason(r, a);
     if (r.render.state.samples_done == 0) {

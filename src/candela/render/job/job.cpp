@@ -276,20 +276,29 @@ RenderJobResult run_render_job(const RenderJobOptions& options, const MpiSession
     return run_on_this_rank(options, nullptr, 0);
 }
 
-RenderJobResult run_render_job(const RenderJobOptions& options) {
+JobRanks::JobRanks() {
     const std::optional<int> launched = mpi_launch_size();
 #if CANDELA_HAVE_MPI
-    if (launched && *launched != 1) {
-        const MpiSession mpi(nullptr, nullptr);
-        return run_render_job(options, mpi.size() == 1 ? nullptr : &mpi);
-    }
+    if (launched && *launched != 1) session_ = new MpiSession(nullptr, nullptr);
 #else
     if (launched && *launched > 1)
         bad_flag(fmt::format("this candela was built without MPI, so each of the {} processes mpirun started would "
                              "render the whole image; install libopenmpi-dev (scripts/setup.sh does) and build again",
                              *launched));
 #endif
-    return run_render_job(options, nullptr);
+}
+
+JobRanks::~JobRanks() {
+#if CANDELA_HAVE_MPI
+    delete session_;
+#endif
+}
+
+const MpiSession* JobRanks::session() const {
+#if CANDELA_HAVE_MPI
+    if (session_ && session_->size() > 1) return session_;
+#endif
+    return nullptr;
 }
 
 }  // namespace candela

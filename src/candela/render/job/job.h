@@ -90,14 +90,31 @@ struct RenderJobResult {
     uint64_t bytes_to_rank0 = 0, bytes_from_rank0 = 0;  // MPI messages' payload, rank 0's view
 };
 
-// Runs the job in this process, or, when an MPI launcher started it with more than one process,
-// as one rank of an MPI job (an MPI session for the length of the call; a candela built without
-// MPI refuses then). Bad input (scene, flags, checkpoint) throws SceneError; an MPI rank's error
-// is reported as a kError message and ends every rank at once (exit code 2 for a SceneError, 1
-// for any other).
-RenderJobResult run_render_job(const RenderJobOptions& options);
+// Where jobs run: this process alone, or, when an MPI launcher (mpirun, srun) started it as one of
+// several processes, one rank of an MPI job, with MPI initialised for the object's lifetime. Keep
+// it until the result is reported: MPI_Finalize ends what a rank's launcher forwards of its output.
+class JobRanks {
+  public:
+    // Throws SceneError when launched as several processes by a candela built without MPI (each
+    // would render the whole image).
+    JobRanks();
+    ~JobRanks();
+    JobRanks(const JobRanks&) = delete;
+    JobRanks& operator=(const JobRanks&) = delete;
 
-// The same as one rank of `session`'s job, or alone when `session` is null.
-RenderJobResult run_render_job(const RenderJobOptions& options, const MpiSession* session);
+    // The MPI session of a job of more than one rank, else null.
+    const MpiSession* session() const;
+
+  private:
+    // Owned; a plain pointer, as the type is complete only with MPI. A launcher's job of one
+    // process has a session too (MPI initialised), but renders alone.
+    MpiSession* session_ = nullptr;
+};
+
+// Runs the job as one rank of `session`'s MPI job, or in this process alone when `session` is
+// null. Bad input (scene, flags, checkpoint) throws SceneError; under MPI, an error on a rank is
+// reported as a kError message and ends every rank at once (exit code 2 for a SceneError, 1 for
+// any other exception).
+RenderJobResult run_render_job(const RenderJobOptions& options, const MpiSession* session = nullptr);
 
 }  // namespace candela
