@@ -103,6 +103,24 @@ TEST(Cli, TargetErrorAndAdaptiveSummaryAndResume) {
     EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
+// As a user meets it: a render at --resolution 20x12, resumed with --resume alone, continues at
+// 20x12; a --resolution that contradicts the checkpoint is refused naming the flag and the file.
+TEST(Cli, ResumeTakesTheResolutionFromTheCheckpoint) {
+    const fs::path dir = temp_dir("resume_resolution");
+    const std::string ckpt = (dir / "ck.ckpt").string();
+    CliResult r = run_candela("render " + kScene + " --resolution 20x12 --spp 2 --checkpoint " + ckpt + " -o " +
+                              (dir / "a.pfm").string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    r = run_candela("render " + kScene + " --spp 4 --resume " + ckpt + " -o " + (dir / "b.pfm").string());
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("candela: 20x12, 4 spp"), std::string::npos) << r.output;
+    r = run_candela("render " + kScene + " --resolution 30x30 --spp 4 --resume " + ckpt + " -o " +
+                    (dir / "c.pfm").string());
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output, "candela: error: " + ckpt + ": cannot resume: the checkpoint is 20x12, this render 30x30 "
+                        "(--resolution 30x30; without it the render takes the checkpoint's)\n");
+}
+
 TEST(Cli, SensorFlagsAreCheckedAsTheFilmKeys) {
     CliResult r = run_candela("render " + kScene + " --white-balance 500");
     EXPECT_EQ(r.exit_code, 2) << r.output;
