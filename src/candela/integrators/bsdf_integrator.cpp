@@ -4,11 +4,7 @@
 namespace candela {
 
 // smallpt's radiance(): follow BSDF samples and add emission wherever the path lands.
-Rgb BsdfIntegrator::radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
-    return in_mode(ray, sampler, counters, [this](auto spectral, const Ray& r, Sampler& s, RayCounters& c,
-                                                  SampledWavelengths* w) { return trace<spectral()>(r, s, c, w); });
-}
-
+template <>
 template <bool kSpectral>
 Color BsdfIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& counters, SampledWavelengths* w) const {
     const Color* lambda = kSpectral ? &w->lambda : nullptr;
@@ -36,5 +32,7 @@ Color BsdfIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters
     }
     return L;
 }
+
+template class EstimatorIntegrator<Estimator::kBsdf>;
 
 }  // namespace candela

@@ -6,11 +6,7 @@ namespace candela {
 // pbrt-v4's PathIntegrator::Li. At each vertex: emission found
 // by the BSDF-sampled ray (MIS-weighted against having sampled the light), then one light sample
 // (MIS-weighted against having sampled the BSDF), then the next direction by BSDF sampling.
-Rgb PathIntegrator::radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
-    return in_mode(ray, sampler, counters, [this](auto spectral, const Ray& r, Sampler& s, RayCounters& c,
-                                                  SampledWavelengths* w) { return trace<spectral()>(r, s, c, w); });
-}
-
+template <>
 template <bool kSpectral>
 Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& counters, SampledWavelengths* w) const {
     const Color* lambda = kSpectral ? &w->lambda : nullptr;
@@ -71,5 +67,7 @@ Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters
     }
     return L;
 }
+
+template class EstimatorIntegrator<Estimator::kPath>;
 
 }  // namespace candela

@@ -54,11 +54,27 @@ class TransportIntegrator : public Integrator {
     Sensor sensor_;                          // the film's (iso, exposure_time, white_balance)
 };
 
-// Unidirectional path tracing with next-event estimation and BSDF sampling, combined by multiple
-// importance sampling (power heuristic); emission counted exactly once. With mis = false it is
-// the GAMES101 estimator: light only by NEE, emission found by BSDF rays ignored after the camera
-// hit (except after delta bounces, which NEE cannot reach).
-class PathIntegrator final : public TransportIntegrator {
+// The estimators of the light-transport integrator (IntegratorType path, bsdf and whitted).
+enum class Estimator {
+    // Unidirectional path tracing with next-event estimation and BSDF sampling, combined by
+    // multiple importance sampling (power heuristic); emission counted exactly once. With
+    // mis = false it is the GAMES101 estimator: light only by NEE, emission found by BSDF rays
+    // ignored after the camera hit (except after delta bounces, which NEE cannot reach).
+    kPath,
+    // Pure BSDF sampling: light is found only by hitting emitters (smallpt's estimator).
+    kBsdf,
+    // Whitted-style ray tracing (pbrt-v3's WhittedIntegrator): emission seen directly or through
+    // perfect specular chains, direct light at non-delta surfaces, and recursion only through
+    // delta lobes (following the one the BSDF samples, which is the unbiased form of branching
+    // into both).
+    kWhitted,
+};
+
+// A light-transport integrator running one estimator. Its trace() is the estimator, written
+// once for both modes and defined in the estimator's own file (path_integrator.cpp,
+// bsdf_integrator.cpp, whitted_integrator.cpp), which also compiles the class.
+template <Estimator kEstimator>
+class EstimatorIntegrator final : public TransportIntegrator {
   public:
     using TransportIntegrator::TransportIntegrator;
     Rgb radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const override;
@@ -69,30 +85,17 @@ class PathIntegrator final : public TransportIntegrator {
     Color trace(const Ray& ray, Sampler& sampler, RayCounters& counters, SampledWavelengths* w) const;
 };
 
-// Pure BSDF sampling: light is found only by hitting emitters (smallpt's estimator).
-class BsdfIntegrator final : public TransportIntegrator {
-  public:
-    using TransportIntegrator::TransportIntegrator;
-    Rgb radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const override;
+template <Estimator kEstimator>
+Rgb EstimatorIntegrator<kEstimator>::radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
+    return in_mode(ray, sampler, counters, [this](auto spectral, const Ray& r, Sampler& s, RayCounters& c,
+                                                  SampledWavelengths* w) { return trace<spectral()>(r, s, c, w); });
+}
 
-  private:
-    // The radiance along ray: RGB-mode colour, or the values at the wavelengths w (spectral).
-    template <bool kSpectral>
-    Color trace(const Ray& ray, Sampler& sampler, RayCounters& counters, SampledWavelengths* w) const;
-};
-
-// Whitted-style ray tracing (pbrt-v3's WhittedIntegrator): emission seen directly or through
-// perfect specular chains, direct light at non-delta surfaces, and recursion only through delta
-// lobes (following the one the BSDF samples, which is the unbiased form of branching into both).
-class WhittedIntegrator final : public TransportIntegrator {
-  public:
-    using TransportIntegrator::TransportIntegrator;
-    Rgb radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const override;
-
-  private:
-    // The radiance along ray: RGB-mode colour, or the values at the wavelengths w (spectral).
-    template <bool kSpectral>
-    Color trace(const Ray& ray, Sampler& sampler, RayCounters& counters, SampledWavelengths* w) const;
-};
+using PathIntegrator = EstimatorIntegrator<Estimator::kPath>;
+using BsdfIntegrator = EstimatorIntegrator<Estimator::kBsdf>;
+using WhittedIntegrator = EstimatorIntegrator<Estimator::kWhitted>;
+extern template class EstimatorIntegrator<Estimator::kPath>;
+extern template class EstimatorIntegrator<Estimator::kBsdf>;
+extern template class EstimatorIntegrator<Estimator::kWhitted>;
 
 }  // namespace candela

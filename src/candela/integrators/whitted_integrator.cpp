@@ -3,11 +3,7 @@
 
 namespace candela {
 
-Rgb WhittedIntegrator::radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
-    return in_mode(ray, sampler, counters, [this](auto spectral, const Ray& r, Sampler& s, RayCounters& c,
-                                                  SampledWavelengths* w) { return trace<spectral()>(r, s, c, w); });
-}
-
+template <>
 template <bool kSpectral>
 Color WhittedIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& counters, SampledWavelengths* w) const {
     const Color* lambda = kSpectral ? &w->lambda : nullptr;
@@ -36,5 +32,7 @@ Color WhittedIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
     }
     return L;
 }
+
+template class EstimatorIntegrator<Estimator::kWhitted>;
 
 }  // namespace candela
