@@ -47,7 +47,7 @@ struct SampleContext {
 // `to`, after the radiance has taken its random numbers; a sample whose radiance is dropped keeps
 // its AOV values, which are always finite. Statistics: the value's square is also added to
 // `squares` (a dropped sample counts as zero there too; the caller counts samples).
-template <bool Weighted, bool WithAovs, bool Statistics = false, CameraModel CameraT>
+template <bool Weighted, bool WithAovs, bool Statistics, CameraModel CameraT>
 void take_sample(const SampleContext& c, const CameraT& camera, int x, int y, uint32_t s,
                  const PixelSampler& pixel_sampler, PixelSum& sum, double& weight_sum, TileTally& tally, Film& to,
                  Vec2i film_pixel, PixelSum* squares = nullptr) {
@@ -76,75 +76,74 @@ void take_sample(const SampleContext& c, const CameraT& camera, int x, int y, ui
     }
 }
 
-// The samples [begin, end) of one tile's pixels, for one kind of camera and filter, with or without
-// AOVs: the caller dispatches on all three once per tile, so the sample loop has no camera, weight
-// or AOV branch (a render without AOVs runs the code it ran before they existed). Tiles are in
-// film pixels; the camera and the sampler see full-image pixels, so a cropped film's pixels get
-// the rays and random numbers they have in the full image.
-template <bool Weighted, bool WithAovs, CameraModel CameraT>
-void render_pixels(const SampleContext& c, const CameraT& camera, const Tile& tile, uint32_t begin, uint32_t end,
-                   const Film& from, Film& to, TileTally& tally) {
-    for (int y = tile.y0; y < tile.y1; ++y) {
-        for (int x = tile.x0; x < tile.x1; ++x) {
-            const int full_x = x + c.bounds.x0, full_y = y + c.bounds.y0;
+// The samples [begin, end) of the pixels of `block` (film pixels), for one kind of camera and
+// filter, with or without AOVs and statistics: the caller dispatches on all four once per tile,
+// so the sample loop has no camera, weight, AOV or statistics branch (a film without statistics
+// or AOVs runs the loop it ran before they existed). The camera and the sampler see full-image
+// pixels, so a cropped film's pixels get the rays and random numbers they have in the full
+// image. Statistics: also the sums of squares, the counts, the prefix sums and the rays each
+// pixel's samples trace (its work, which --target-error's allocation weighs); an inactive block
+// (adaptive_sampling.h) takes no samples and is copied.
+template <bool Weighted, bool WithAovs, bool Statistics, CameraModel CameraT>
+void render_block(const SampleContext& c, const CameraT& camera, const PixelBounds& block, bool active,
+                  uint32_t begin, uint32_t end, const Film& from, Film& to, TileTally& tally) {
+    for (int y = block.y0; y < block.y1; ++y) {
+        for (int x = block.x0; x < block.x1; ++x) {
             PixelSum sum = from.sum(x, y);
-            double weight_sum = 0.0;
-            if constexpr (Weighted) weight_sum = from.weight(x, y);
+            double weight_sum = Weighted ? from.weight(x, y) : 0.0;
+            PixelSum squares{};
+            double count = 0.0, rays = 0.0;
+            PrefixSums prefixes;
+            if constexpr (Statistics) {
+                squares = from.squares(x, y);
+                count = from.count(x, y);
+                rays = from.rays(x, y);
+                prefixes = from.prefix_sums(x, y);
+            }
             if constexpr (WithAovs)
-                if (&from != &to)
-                    std::copy_n(from.aov_sums(x, y), from.aovs().value_count(), to.aov_sums(x, y));
-            const PixelSampler pixel_sampler(c.sampler_type,
-                                             uint64_t(full_y) * uint64_t(c.width) + uint64_t(full_x), c.seed);
-            for (uint32_t s = begin; s < end; ++s)
-                take_sample<Weighted, WithAovs>(c, camera, full_x, full_y, s, pixel_sampler, sum, weight_sum, tally, to,
-                                                Vec2i(x, y));
-            to.sum(x, y) = sum;
-            if constexpr (Weighted) to.weight(x, y) = weight_sum;
-        }
-    }
-}
-
-// render_pixels for a film with statistics: also the sums of squares and the counts, and with
-// adaptive sampling or --target-error only the tile's blocks that are still active
-// (adaptive_sampling.h) take samples; the others are copied. The rays each pixel's samples trace
-// are its work, which --target-error's allocation weighs. A separate function, so that films without statistics keep
-// their loop as it was.
-template <bool Weighted, bool WithAovs, CameraModel CameraT>
-void render_pixels_with_statistics(const SampleContext& c, const CameraT& camera, const Tile& tile, uint32_t begin,
-                                   uint32_t end, const Film& from, Film& to, TileTally& tally,
-                                   std::optional<double> target_scale) {
-    for (const PixelBounds& block : tile_blocks(tile)) {
-        const bool active = (!c.adaptive && !target_scale) || block_active(from, block, begin, c.adaptive, target_scale);
-        for (int y = block.y0; y < block.y1; ++y) {
-            for (int x = block.x0; x < block.x1; ++x) {
-                PixelSum sum = from.sum(x, y);
-                PixelSum squares = from.squares(x, y);
-                double weight_sum = Weighted ? from.weight(x, y) : 0.0;
-                double count = from.count(x, y), rays = from.rays(x, y);
-                PrefixSums prefixes = from.prefix_sums(x, y);
-                if constexpr (WithAovs)
-                    if (&from != &to) std::copy_n(from.aov_sums(x, y), from.aovs().value_count(), to.aov_sums(x, y));
-                if (active) {
-                    const uint64_t rays_before = tally.rays.total();
-                    const int full_x = x + c.bounds.x0, full_y = y + c.bounds.y0;
-                    const PixelSampler pixel_sampler(c.sampler_type,
-                                                     uint64_t(full_y) * uint64_t(c.width) + uint64_t(full_x), c.seed);
-                    for (uint32_t s = begin; s < end; ++s) {
-                        take_sample<Weighted, WithAovs, true>(c, camera, full_x, full_y, s, pixel_sampler, sum,
-                                                              weight_sum, tally, to, Vec2i(x, y), &squares);
-                        prefixes.after_sample(s, sum, Weighted ? weight_sum : double(s + 1));
-                    }
+                if (&from != &to) std::copy_n(from.aov_sums(x, y), from.aovs().value_count(), to.aov_sums(x, y));
+            if (!Statistics || active) {
+                uint64_t rays_before = 0;
+                if constexpr (Statistics) rays_before = tally.rays.total();
+                const int full_x = x + c.bounds.x0, full_y = y + c.bounds.y0;
+                const PixelSampler pixel_sampler(c.sampler_type,
+                                                 uint64_t(full_y) * uint64_t(c.width) + uint64_t(full_x), c.seed);
+                for (uint32_t s = begin; s < end; ++s) {
+                    take_sample<Weighted, WithAovs, Statistics>(c, camera, full_x, full_y, s, pixel_sampler, sum,
+                                                                weight_sum, tally, to, Vec2i(x, y), &squares);
+                    if constexpr (Statistics) prefixes.after_sample(s, sum, Weighted ? weight_sum : double(s + 1));
+                }
+                if constexpr (Statistics) {
                     count += double(end - begin);
                     rays += double(tally.rays.total() - rays_before);
                 }
-                to.sum(x, y) = sum;
+            }
+            to.sum(x, y) = sum;
+            if constexpr (Weighted) to.weight(x, y) = weight_sum;
+            if constexpr (Statistics) {
                 to.squares(x, y) = squares;
                 to.count(x, y) = count;
                 to.rays(x, y) = rays;
                 to.prefix_sums(x, y) = prefixes;
-                if constexpr (Weighted) to.weight(x, y) = weight_sum;
             }
         }
+    }
+}
+
+// A tile's samples [begin, end): with statistics block by block, since adaptive sampling and
+// --target-error decide per block (tile_blocks) which blocks still take samples; without, the
+// tile as one block.
+template <bool Weighted, bool WithAovs, bool Statistics, CameraModel CameraT>
+void render_pixels(const SampleContext& c, const CameraT& camera, const Tile& tile, uint32_t begin, uint32_t end,
+                   const Film& from, Film& to, TileTally& tally, std::optional<double> target_scale) {
+    if constexpr (Statistics) {
+        for (const PixelBounds& block : tile_blocks(tile)) {
+            const bool active =
+                (!c.adaptive && !target_scale) || block_active(from, block, begin, c.adaptive, target_scale);
+            render_block<Weighted, WithAovs, true>(c, camera, block, active, begin, end, from, to, tally);
+        }
+    } else {
+        render_block<Weighted, WithAovs, false>(c, camera, tile.bounds(), true, begin, end, from, to, tally);
     }
 }
 
@@ -198,10 +197,11 @@ void FrameRenderer::render_tile(const Tile& tile, uint32_t begin, uint32_t end, 
     auto run = [&](auto weighted, auto with_aovs) {
         visit([&](const auto& cam) {
             if (statistics)
-                render_pixels_with_statistics<weighted(), with_aovs()>(p.context, cam, tile, begin, end, from, to, tally,
-                                                                       target_scale);
+                render_pixels<weighted(), with_aovs(), true>(p.context, cam, tile, begin, end, from, to, tally,
+                                                             target_scale);
             else
-                render_pixels<weighted(), with_aovs()>(p.context, cam, tile, begin, end, from, to, tally);
+                render_pixels<weighted(), with_aovs(), false>(p.context, cam, tile, begin, end, from, to, tally,
+                                                              target_scale);
         }, p.camera);
     };
     if (p.filter.weighted())
