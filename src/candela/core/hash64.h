@@ -3,14 +3,16 @@
 // detecting corrupt files (a checkpoint's checksum). Not cryptographic: it guards against
 // accidents, not adversaries.
 //
-// Each 8-byte little-endian word is xored into the state, which is then mixed by splitmix64's
-// output function (Stafford's "Mix13"), a bijection in which every input bit flips every output
-// bit with probability ~1/2. The byte count goes into the final word, so inputs that differ only
-// by trailing zero bytes differ. The result does not depend on how the input was split into
-// add() calls.
+// Each 8-byte little-endian word is xored into the state, which is then mixed by mix_bits
+// (core/mix_bits.h: splitmix64's output function), a bijection in which every input bit flips
+// every output bit with probability ~1/2. The byte count goes into the final word, so inputs
+// that differ only by trailing zero bytes differ. The result does not depend on how the input
+// was split into add() calls.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
+
+#include "candela/core/mix_bits.h"
 
 namespace candela {
 
@@ -27,7 +29,7 @@ class Hash64 {
         for (; i + 8 <= size; i += 8) {
             uint64_t word = 0;
             for (unsigned b = 0; b < 8; ++b) word |= uint64_t(bytes[i + b]) << (8u * b);
-            state_ = mix(state_ ^ word);
+            state_ = mix_bits(state_ ^ word);
         }
         while (i < size) add_byte(bytes[i++]);
     }
@@ -45,24 +47,17 @@ class Hash64 {
     }
 
     // The hash of everything added so far (the hasher can go on).
-    uint64_t value() const { return mix(mix(state_ ^ pending_) ^ length_); }
+    uint64_t value() const { return mix_bits(mix_bits(state_ ^ pending_) ^ length_); }
 
   private:
     void add_byte(unsigned char byte) {
         pending_ |= uint64_t(byte) << (8u * pending_bytes_);
         if (++pending_bytes_ == 8) {
-            state_ = mix(state_ ^ pending_);
+            state_ = mix_bits(state_ ^ pending_);
             pending_ = 0;
             pending_bytes_ = 0;
         }
     }
-    static constexpr uint64_t mix(uint64_t x) {
-        x += 0x9e3779b97f4a7c15ull;
-        x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-        x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-        return x ^ (x >> 31);
-    }
-
     uint64_t state_ = 0x6a09e667f3bcc908ull;  // the fraction bits of sqrt(2): any fixed start would do
     uint64_t pending_ = 0;                    // bytes not yet a full word, little-endian
     unsigned pending_bytes_ = 0;

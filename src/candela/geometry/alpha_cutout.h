@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "candela/core/mix_bits.h"
 #include "candela/core/platform.h"
 #include "candela/math/vec.h"
 #include "candela/textures/texture_param.h"
@@ -30,19 +31,13 @@ struct AlphaCutouts {
 };
 
 // A number in [0, 1) from the ray (o, d) and the primitive it meets: each input bit flips each
-// output bit with probability about 1/2 (splitmix64's finalizer after each 64-bit word).
+// output bit with probability about 1/2 (mix_bits after each 64-bit word).
 CANDELA_HD inline float alpha_hash(const Vec3f& o, const Vec3f& d, uint32_t geometry, uint32_t primitive) {
-    auto mix = [](uint64_t x) {
-        x += 0x9e3779b97f4a7c15ull;
-        x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-        x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-        return x ^ (x >> 31);
-    };
     auto word = [](float a, float b) { return uint64_t(std::bit_cast<uint32_t>(a)) << 32 | std::bit_cast<uint32_t>(b); };
-    uint64_t h = mix(word(o.x, o.y));
-    h = mix(h ^ word(o.z, d.x));
-    h = mix(h ^ word(d.y, d.z));
-    h = mix(h ^ (uint64_t(geometry) << 32 | primitive));
+    uint64_t h = mix_bits(word(o.x, o.y));
+    h = mix_bits(h ^ word(o.z, d.x));
+    h = mix_bits(h ^ word(d.y, d.z));
+    h = mix_bits(h ^ (uint64_t(geometry) << 32 | primitive));
     return float(h >> 40) * 0x1p-24f;  // 24 bits: every value exact, the largest 1 - 2^-24
 }
 

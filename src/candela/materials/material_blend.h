@@ -12,6 +12,7 @@
 #include <bit>
 #include <cstdint>
 
+#include "candela/core/mix_bits.h"
 #include "candela/core/platform.h"
 #include "candela/math/vec.h"
 #include "candela/textures/texture_param.h"
@@ -28,20 +29,14 @@ struct MaterialBlend {
 
 // A number in [0, 1) from the shading point p, the outgoing direction wo (world space, towards
 // where the path came from) and the blend's material index: every input bit flips each output bit
-// with probability about 1/2 (splitmix64's finalizer after each 64-bit word, as alpha_hash). The
+// with probability about 1/2 (mix_bits after each 64-bit word, as alpha_hash). The
 // index keeps nested blends' choices independent at the same point (pbrt-v4 hashes its two
 // parts' addresses).
 CANDELA_HD inline float blend_hash(const Vec3f& p, const Vec3f& wo, uint32_t blend) {
-    auto mix = [](uint64_t x) {
-        x += 0x9e3779b97f4a7c15ull;
-        x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-        x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-        return x ^ (x >> 31);
-    };
     auto word = [](float a, float b) { return uint64_t(std::bit_cast<uint32_t>(a)) << 32 | std::bit_cast<uint32_t>(b); };
-    uint64_t h = mix(word(p.x, p.y) ^ (uint64_t(blend) * 0xd6e8feb86659fd93ull));
-    h = mix(h ^ word(p.z, wo.x));
-    h = mix(h ^ word(wo.y, wo.z));
+    uint64_t h = mix_bits(word(p.x, p.y) ^ (uint64_t(blend) * 0xd6e8feb86659fd93ull));
+    h = mix_bits(h ^ word(p.z, wo.x));
+    h = mix_bits(h ^ word(wo.y, wo.z));
     return float(h >> 40) * 0x1p-24f;  // 24 bits: every value exact, the largest 1 - 2^-24
 }
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <numeric>
 
-#include "candela/sampling/rng.h"
+#include "candela/core/mix_bits.h"
 
 namespace candela {
 

@@ -9,20 +9,11 @@
 // interruption, because no generator state is shared between samples.
 #include <cstdint>
 
+#include "candela/core/mix_bits.h"
 #include "candela/core/platform.h"
 #include "candela/math/vec.h"
 
 namespace candela {
-
-// splitmix64's output function (Steele, Lea, Flood 2014; Stafford's "Mix13" constants): a
-// bijection on 64-bit integers where each input bit flips each output bit with probability ~1/2.
-// The added golden-ratio increment keeps 0 from mapping to 0.
-CANDELA_HD constexpr uint64_t mix_bits(uint64_t x) {
-    x += 0x9e3779b97f4a7c15ull;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-}
 
 // The 24 high bits of `bits` as a float in [0, 1): multiples of 2^-24, at most 1 - 2^-24, so the
 // result is exact and never rounds up to 1.0.
