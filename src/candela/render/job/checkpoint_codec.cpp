@@ -60,15 +60,27 @@ void write_common_header(Writer& w, uint32_t format, const RenderIdentity& ident
                          uint64_t dropped_samples) {
     w.out.append(kMagic);
     w.u32(format);
+    write_identity_start(w, identity);
+    w.u32(uint32_t(identity.width));
+    w.u32(uint32_t(identity.height));
+    w.u32(samples_done);
+    w.u64(dropped_samples);
+}
+
+void write_identity_start(Writer& w, const RenderIdentity& identity) {
     w.string(identity.candela_version);
     w.string(identity.integrator);
     w.string(identity.sampler);
     w.u64(identity.content_hash);
     w.u64(identity.seed);
-    w.u32(uint32_t(identity.width));
-    w.u32(uint32_t(identity.height));
-    w.u32(samples_done);
-    w.u64(dropped_samples);
+}
+
+void read_identity_start(Reader& r, RenderIdentity& identity) {
+    identity.candela_version = r.string();
+    identity.integrator = r.string();
+    identity.sampler = r.string();
+    identity.content_hash = r.u64();
+    identity.seed = r.u64();
 }
 
 CommonHeader read_common_header(const fs::path& file, Reader& r, uint64_t size) {
@@ -78,11 +90,7 @@ CommonHeader read_common_header(const fs::path& file, Reader& r, uint64_t size) 
         fail(file, fmt::format("checkpoint format version {}; this candela reads versions {} to {}", h.format,
                                kFormatVersion, kFilmValuesFormatVersion));
     RenderIdentity& id = h.identity;
-    id.candela_version = r.string();
-    id.integrator = r.string();
-    id.sampler = r.string();
-    id.content_hash = r.u64();
-    id.seed = r.u64();
+    read_identity_start(r, id);
     const uint32_t width = r.u32(), height = r.u32();
     h.samples_done = r.u32();
     h.dropped_samples = r.u64();

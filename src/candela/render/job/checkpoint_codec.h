@@ -78,6 +78,11 @@ class Reader {
     bool overlong_ = false;
 };
 
+// The identity's names and numbers up to its resolution, in file order: the common header's, and
+// what rank 0 sends the other ranks of a resumed MPI job (render/job/job_files.cpp).
+void write_identity_start(Writer& w, const RenderIdentity& identity);
+void read_identity_start(Reader& r, RenderIdentity& identity);
+
 // Writes the header every format starts with: magic, format version, identity (its width and
 // height are the film's), samples done, dropped samples.
 void write_common_header(Writer& w, uint32_t format, const RenderIdentity& identity, uint32_t samples_done,

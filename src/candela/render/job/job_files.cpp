@@ -36,9 +36,7 @@ void share_resumed_settings(const MpiSession& session, std::optional<ResumedFile
     Writer w;
     if (session.rank() == 0) {
         const RenderIdentity& id = resumed->identity;
-        for (const std::string& s : {id.candela_version, id.integrator, id.sampler}) w.string(s);
-        w.u64(id.content_hash);
-        w.u64(id.seed);
+        write_identity_start(w, id);
         for (uint32_t v : {uint32_t(id.width), uint32_t(id.height), id.aov_layers, uint32_t(id.adaptive.has_value()),
                            id.adaptive ? std::bit_cast<uint32_t>(id.adaptive->threshold) : 0u,
                            id.adaptive ? uint32_t(id.adaptive->min_spp) : 0u, resumed->target_spp})
@@ -49,11 +47,7 @@ void share_resumed_settings(const MpiSession& session, std::optional<ResumedFile
     Reader r(bytes);
     ResumedFile settings;
     RenderIdentity& id = settings.identity;
-    id.candela_version = r.string();
-    id.integrator = r.string();
-    id.sampler = r.string();
-    id.content_hash = r.u64();
-    id.seed = r.u64();
+    read_identity_start(r, id);
     id.width = int(r.u32());
     id.height = int(r.u32());
     id.aov_layers = r.u32();
