@@ -59,8 +59,8 @@ TEST(DiskEmitter, PowerAndSidesInTheLightSet) {
     EXPECT_NEAR(lights.selection_probability(1), 2.0f / 2.5f, 1e-6f);
     // The first is one-sided: black seen from behind; the second two-sided.
     EXPECT_TRUE(lights.emitted(0, {0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, 1.0f}).is_black());
-    EXPECT_EQ(lights.emitted(0, {0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, -1.0f}), Rgb(2.0f));
-    EXPECT_EQ(lights.emitted(1, {0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, 1.0f}), Rgb(1.0f));
+    EXPECT_EQ(lights.emitted(0, {0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, -1.0f}), Color(2.0f));
+    EXPECT_EQ(lights.emitted(1, {0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, 1.0f}), Color(1.0f));
 }
 
 TEST(DiskEmitter, SampledPointsNormalsAndRadianceAgreeWithHits) {

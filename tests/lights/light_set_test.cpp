@@ -120,11 +120,11 @@ TEST(LightSet, OneSidedLightIsBlackFromBehindTwoSidedIsNot) {
     LightTestScene scene = three_lights();
     LightSet lights = scene.light_set();
     const Vec3f n_quad(0.0f, 0.0f, -1.0f);
-    EXPECT_EQ(lights.emitted(0, n_quad, {0.0f, 0.6f, -0.8f}), Rgb(1.0f, 2.0f, 3.0f));
+    EXPECT_EQ(lights.emitted(0, n_quad, {0.0f, 0.6f, -0.8f}), Color(1.0f, 2.0f, 3.0f));
     EXPECT_TRUE(lights.emitted(0, n_quad, {0.0f, 0.6f, 0.8f}).is_black());
     const Vec3f n_tri(0.0f, -1.0f, 0.0f);  // cross((2,0,0), (0,0,1))
-    EXPECT_EQ(lights.emitted(3, n_tri, {0.0f, -1.0f, 0.0f}), Rgb(0.5f, 0.0f, 0.0f));
-    EXPECT_EQ(lights.emitted(3, n_tri, {0.0f, 1.0f, 0.0f}), Rgb(0.5f, 0.0f, 0.0f));
+    EXPECT_EQ(lights.emitted(3, n_tri, {0.0f, -1.0f, 0.0f}), Color(0.5f, 0.0f, 0.0f));
+    EXPECT_EQ(lights.emitted(3, n_tri, {0.0f, 1.0f, 0.0f}), Color(0.5f, 0.0f, 0.0f));
 
     // Samples of the quad alone: radiance in front, black (with the true density) behind.
     LightTestScene quad_only;
@@ -132,7 +132,7 @@ TEST(LightSet, OneSidedLightIsBlackFromBehindTwoSidedIsNot) {
     LightSet quad = quad_only.light_set();
     std::optional<LightSample> front = quad.sample(kOrigin, 0.3f, {0.4f, 0.6f});
     ASSERT_TRUE(front);
-    EXPECT_EQ(front->Le, Rgb(1.0f, 2.0f, 3.0f));
+    EXPECT_EQ(front->Le, Color(1.0f, 2.0f, 3.0f));
     EXPECT_EQ(front->n, n_quad);
     std::optional<LightSample> back = quad.sample({0.0f, 0.0f, 4.0f}, 0.3f, {0.4f, 0.6f});
     ASSERT_TRUE(back);
@@ -146,7 +146,7 @@ TEST(LightSet, ReversedSphereEmitsInwardOnly) {
     LightSet lights = scene.light_set();
     std::optional<LightSample> inside = lights.sample({0.5f, 0.0f, 0.0f}, 0.5f, {0.2f, 0.9f});
     ASSERT_TRUE(inside);
-    EXPECT_EQ(inside->Le, Rgb(1.5f));
+    EXPECT_EQ(inside->Le, Color(1.5f));
     EXPECT_LT(dot(inside->n, inside->p), 0.0f);  // the front normal points to the centre
     std::optional<LightSample> outside = lights.sample({0.0f, 0.0f, 5.0f}, 0.5f, {0.2f, 0.9f});
     ASSERT_TRUE(outside);
@@ -174,7 +174,7 @@ TEST(LightSet, PointsOnAnInwardEmittingSphereSeeItsWholeRadiance) {
             Vec2f u = rng.next_vec2f();
             std::optional<LightSample> s = lights.sample(ref, uc, u);
             ASSERT_TRUE(s) << "radius " << sphere.radius << ", sample " << i;
-            ASSERT_EQ(s->Le, Rgb(2.0f)) << "radius " << sphere.radius << ", sample " << i;
+            ASSERT_EQ(s->Le, Color(2.0f)) << "radius " << sphere.radius << ", sample " << i;
             double d = length(Vec3d(s->p) - Vec3d(ref));
             if (d < 1e-3 * sphere.radius) continue;  // the rounding of ref dominates cos there
             double cos_ref = static_cast<double>(dot(n_in, s->p - ref)) / d;
@@ -280,7 +280,7 @@ TEST(LightSet, PdfOfSmallFarQuadIsDistanceSquaredOverProjectedArea) {
         Vec2f u = rng.next_vec2f();
         std::optional<LightSample> ls = lights.sample(kOrigin, uc, u);
         ASSERT_TRUE(ls);
-        EXPECT_EQ(ls->Le, Rgb(1.0f));
+        EXPECT_EQ(ls->Le, Color(1.0f));
         EXPECT_NEAR(static_cast<double>(ls->pdf) / expected, 1.0, 3e-3);
     }
     // At the centre, exact but for the area of the quad's float vertices (0.01 edges at z = 10:

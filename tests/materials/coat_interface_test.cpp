@@ -34,7 +34,7 @@ float fresnel_between(const CoatInterface& coat, Vec3f wo, Vec3f wi) {
 TEST(CoatInterface, UnrestrictedIsTheDielectricLobe) {
     Rng rng(11, 2);
     for (const CoatInterface& coat : kCoats) {
-        DielectricLobe glass{Rgb(1.0f), coat.eta, coat.distribution};
+        DielectricLobe glass{Color(1.0f), coat.eta, coat.distribution};
         EXPECT_EQ(coat.is_specular(), glass.is_delta());
         for (const Vec3f& wo : probe_directions()) {
             for (int i = 0; i < 200; ++i) {

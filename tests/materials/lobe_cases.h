@@ -25,51 +25,51 @@ struct LobeCase {
 };
 
 // Gold's complex index at the sRGB primaries' dominant wavelengths, roughly (pbrt-v4's metal-Au).
-inline const Rgb kGoldEta(0.143f, 0.374f, 1.442f);
-inline const Rgb kGoldK(3.983f, 2.385f, 1.603f);
+inline const Color kGoldEta(0.143f, 0.374f, 1.442f);
+inline const Color kGoldK(3.983f, 2.385f, 1.603f);
 
 inline const std::array<LobeCase, 27> kLobeCases = {{
-    {"lambertian", LambertianLobe{Rgb(0.8f, 0.5f, 0.2f)}},
-    {"lambertian_white", LambertianLobe{Rgb(1.0f)}},
-    {"mirror", SpecularReflectionLobe{Rgb(0.9f, 0.6f, 0.3f)}},
-    {"dielectric_exact", FresnelSpecularLobe{Rgb(1.0f, 0.9f, 0.8f), 1.5f, false}},
-    {"dielectric_schlick", FresnelSpecularLobe{Rgb(1.0f), 1.5f, true}},
-    {"dielectric_below_one", FresnelSpecularLobe{Rgb(1.0f), 1.0f / 1.33f, false}},
-    {"transmission", SpecularTransmissionLobe{Rgb(0.7f, 0.8f, 0.9f), 1.5f}},
-    {"transmission_diamond", SpecularTransmissionLobe{Rgb(1.0f), 2.4f}},
+    {"lambertian", LambertianLobe{Color(0.8f, 0.5f, 0.2f)}},
+    {"lambertian_white", LambertianLobe{Color(1.0f)}},
+    {"mirror", SpecularReflectionLobe{Color(0.9f, 0.6f, 0.3f)}},
+    {"dielectric_exact", FresnelSpecularLobe{Color(1.0f, 0.9f, 0.8f), 1.5f, false}},
+    {"dielectric_schlick", FresnelSpecularLobe{Color(1.0f), 1.5f, true}},
+    {"dielectric_below_one", FresnelSpecularLobe{Color(1.0f), 1.0f / 1.33f, false}},
+    {"transmission", SpecularTransmissionLobe{Color(0.7f, 0.8f, 0.9f), 1.5f}},
+    {"transmission_diamond", SpecularTransmissionLobe{Color(1.0f), 2.4f}},
     {"conductor_smooth", ConductorLobe{TrowbridgeReitz(0.0f), kGoldEta, kGoldK}},
     {"conductor_0.01", ConductorLobe{TrowbridgeReitz(0.01f), kGoldEta, kGoldK}},
     {"conductor_0.1", ConductorLobe{TrowbridgeReitz(0.1f), kGoldEta, kGoldK}},
     {"conductor_0.3", ConductorLobe{TrowbridgeReitz(0.3f), kGoldEta, kGoldK}},
     {"conductor_0.8", ConductorLobe{TrowbridgeReitz(0.8f), kGoldEta, kGoldK}},
     {"conductor_anisotropic", ConductorLobe{TrowbridgeReitz(0.05f, 0.4f), kGoldEta, kGoldK}},
-    {"dielectric_smooth", DielectricLobe{Rgb(1.0f, 0.9f, 0.8f), 1.5f, TrowbridgeReitz(0.0f)}},
-    {"dielectric_0.1", DielectricLobe{Rgb(1.0f), 1.5f, TrowbridgeReitz(0.1f)}},
-    {"dielectric_0.3", DielectricLobe{Rgb(1.0f, 0.9f, 0.8f), 1.5f, TrowbridgeReitz(0.3f)}},
-    {"dielectric_below_one_0.1", DielectricLobe{Rgb(1.0f), 1.0f / 1.5f, TrowbridgeReitz(0.1f)}},
-    {"dielectric_below_one_0.3", DielectricLobe{Rgb(1.0f), 1.0f / 1.5f, TrowbridgeReitz(0.3f)}},
-    {"dielectric_anisotropic", DielectricLobe{Rgb(1.0f), 1.5f, TrowbridgeReitz(0.05f, 0.4f)}},
+    {"dielectric_smooth", DielectricLobe{Color(1.0f, 0.9f, 0.8f), 1.5f, TrowbridgeReitz(0.0f)}},
+    {"dielectric_0.1", DielectricLobe{Color(1.0f), 1.5f, TrowbridgeReitz(0.1f)}},
+    {"dielectric_0.3", DielectricLobe{Color(1.0f, 0.9f, 0.8f), 1.5f, TrowbridgeReitz(0.3f)}},
+    {"dielectric_below_one_0.1", DielectricLobe{Color(1.0f), 1.0f / 1.5f, TrowbridgeReitz(0.1f)}},
+    {"dielectric_below_one_0.3", DielectricLobe{Color(1.0f), 1.0f / 1.5f, TrowbridgeReitz(0.3f)}},
+    {"dielectric_anisotropic", DielectricLobe{Color(1.0f), 1.5f, TrowbridgeReitz(0.05f, 0.4f)}},
     {"thin_dielectric", ThinDielectricLobe{1.5f}},
     {"thin_dielectric_diamond", ThinDielectricLobe{2.4f}},
     // Coated lobes: coat, base, medium albedo, thickness, g, max depth, walks per eval.
     {"coated_diffuse_smooth", CoatedDiffuseLobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)},
-                                                LambertianLobe{Rgb(0.7f, 0.3f, 0.2f)}, Rgb(0.0f),
+                                                LambertianLobe{Color(0.7f, 0.3f, 0.2f)}, Color(0.0f),
                                                 0.01f, 0.0f, 10, 1}},
     {"coated_diffuse_rough_medium", CoatedDiffuseLobe{CoatInterface{1.5f, TrowbridgeReitz(0.3f)},
-                                                      LambertianLobe{Rgb(0.5f, 0.6f, 0.7f)},
-                                                      Rgb(0.8f, 0.5f, 0.3f), 0.1f, 0.3f, 10, 2}},
+                                                      LambertianLobe{Color(0.5f, 0.6f, 0.7f)},
+                                                      Color(0.8f, 0.5f, 0.3f), 0.1f, 0.3f, 10, 2}},
     {"coated_conductor_smooth", CoatedConductorLobe{CoatInterface{1.5f, TrowbridgeReitz(0.0f)},
                                                     ConductorLobe{TrowbridgeReitz(0.0f), kGoldEta / 1.5f,
                                                                   kGoldK / 1.5f},
-                                                    Rgb(0.0f), 0.01f, 0.0f, 10, 1}},
+                                                    Color(0.0f), 0.01f, 0.0f, 10, 1}},
     {"coated_conductor_rough", CoatedConductorLobe{CoatInterface{1.5f, TrowbridgeReitz(0.1f)},
                                                    ConductorLobe{TrowbridgeReitz(0.3f), kGoldEta / 1.5f,
                                                                  kGoldK / 1.5f},
-                                                   Rgb(0.0f), 0.01f, 0.0f, 10, 1}},
+                                                   Color(0.0f), 0.01f, 0.0f, 10, 1}},
     {"coated_conductor_anisotropic_medium",
      CoatedConductorLobe{CoatInterface{1.33f, TrowbridgeReitz(0.2f)},
                          ConductorLobe{TrowbridgeReitz(0.05f, 0.3f), kGoldEta / 1.33f, kGoldK / 1.33f},
-                         Rgb(0.9f), 0.5f, -0.3f, 10, 1}},
+                         Color(0.9f), 0.5f, -0.3f, 10, 1}},
 }};
 
 // The unit direction at polar cosine cos_theta and azimuth phi (local frame, z = normal).

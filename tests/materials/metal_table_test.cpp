@@ -25,7 +25,7 @@ static_assert(std::size(kDocumented) == kMetalCount, "document every metal");
 TEST(MetalTable, NormalReflectanceIsTheDocumentedColour) {
     for (const DocumentedMetal& d : kDocumented) {
         const MetalIor& ior = metal_ior(d.metal);
-        Color f0 = fresnel_complex(1.0f, ior.eta, ior.k);
+        Color f0 = fresnel_complex(1.0f, from_rgb(ior.eta), from_rgb(ior.k));
         for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(f0[c], d.normal_reflectance[c], 5.001e-4f)
                 << "metal " << static_cast<int>(d.metal) << " channel " << c;
@@ -39,7 +39,7 @@ TEST(MetalTable, ReflectanceStaysPhysicalAtEveryAngle) {
             EXPECT_GT(ior.k[c], 0.0f);
         }
         for (float cos_theta = 0.0f; cos_theta <= 1.0f; cos_theta += 1.0f / 64.0f) {
-            Color f = fresnel_complex(cos_theta, ior.eta, ior.k);
+            Color f = fresnel_complex(cos_theta, from_rgb(ior.eta), from_rgb(ior.k));
             for (int c = 0; c < 3; ++c) {
                 EXPECT_GE(f[c], 0.0f);
                 EXPECT_LE(f[c], 1.0f);

@@ -39,14 +39,14 @@ TEST(TextureSet, ConstantGivesItsColourAndChannelAverage) {
 TEST(TextureSet, ParameterIsItsConstantOrItsTextureClamped) {
     TextureSet set;
     const uint32_t t = set.add(ConstantTexture{Rgb(-0.5f, 0.5f, 3.0f)});
-    EXPECT_EQ(set.eval(ColorParam{Rgb(0.25f)}, at(0, 0)), Rgb(0.25f));
-    EXPECT_EQ(set.eval(ColorParam{Rgb(0.25f), t}, at(0, 0)), Rgb(-0.5f, 0.5f, 3.0f));
-    EXPECT_EQ(set.eval(ColorParam{Rgb(0.25f), t, 0.0f, 1.0f}, at(0, 0)), Rgb(0.0f, 0.5f, 1.0f));
+    EXPECT_EQ(set.eval(ColorParam{Rgb(0.25f)}, at(0, 0)), Color(0.25f));
+    EXPECT_EQ(set.eval(ColorParam{Rgb(0.25f), t}, at(0, 0)), Color(-0.5f, 0.5f, 3.0f));
+    EXPECT_EQ(set.eval(ColorParam{Rgb(0.25f), t, 0.0f, 1.0f}, at(0, 0)), Color(0.0f, 0.5f, 1.0f));
     const uint32_t n = set.add(ConstantTexture{Rgb(7.0f)});
     EXPECT_EQ(set.eval(FloatParam{0.5f, n}, at(0, 0)), 7.0f);
     EXPECT_EQ(set.eval(FloatParam{0.5f, n, 0.0f, 2.0f}, at(0, 0)), 2.0f);
     // make_material evaluates textured parameters with an empty set: the constant.
-    EXPECT_EQ(TextureSet().eval(ColorParam{Rgb(0.25f), 3}, at(0, 0)), Rgb(0.25f));
+    EXPECT_EQ(TextureSet().eval(ColorParam{Rgb(0.25f), 3}, at(0, 0)), Color(0.25f));
     EXPECT_EQ(TextureSet().eval(FloatParam{0.5f, 3}, at(0, 0)), 0.5f);
 }
 

@@ -34,10 +34,11 @@ struct Color {
     CANDELA_HD constexpr Color() = default;
     // The same value in every channel: grey in RGB mode, a constant spectrum in spectral mode.
     CANDELA_HD explicit constexpr Color(float v) : c{v, v, v, v} {}
-    // An RGB-mode colour: (r, g, b, r). An Rgb converts to it implicitly, as when Color was Rgb;
-    // spectral code never holds an Rgb where it needs a colour (spectrum/ makes those).
+    // An RGB-mode colour: (r, g, b, r). From an Rgb only explicitly (or by from_rgb), so that
+    // spectral code cannot take an RGB triple for its four wavelengths' values by accident
+    // (spectrum/ makes spectral colours).
     CANDELA_HD constexpr Color(float r, float g, float b) : c{r, g, b, r} {}
-    CANDELA_HD constexpr Color(const Rgb& v) : c{v.r, v.g, v.b, v.r} {}
+    CANDELA_HD explicit constexpr Color(const Rgb& v) : c{v.r, v.g, v.b, v.r} {}
     CANDELA_HD static constexpr Color from_channels(float c0, float c1, float c2, float c3) {
         Color x;
         x.c = ColorLanes{c0, c1, c2, c3};

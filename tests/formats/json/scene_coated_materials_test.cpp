@@ -34,18 +34,18 @@ CoatedConductorLobe coated_conductor(const std::string& keys) {
 
 TEST(SceneCoatedMaterials, CoatedDiffuseDefaultsArePbrts) {
     CoatedDiffuseLobe d = coated_diffuse("");
-    EXPECT_EQ(d.base.reflectance, Rgb(0.5f));
+    EXPECT_EQ(d.base.reflectance, Color(0.5f));
     EXPECT_EQ(d.coat.eta, 1.5f);
     EXPECT_TRUE(d.coat.distribution.effectively_smooth());
     EXPECT_EQ(d.thickness, 0.01f);
-    EXPECT_EQ(d.medium_albedo, Rgb(0.0f));
+    EXPECT_EQ(d.medium_albedo, Color(0.0f));
     EXPECT_EQ(d.g, 0.0f);
     EXPECT_EQ(d.max_depth, 10);
     EXPECT_EQ(d.n_samples, 1);
 }
 
 TEST(SceneCoatedMaterials, CoatedDiffuseKeysAreRead) {
-    EXPECT_EQ(coated_diffuse(R"("albedo": [0.7, 0.2, 0.1])").base.reflectance, Rgb(0.7f, 0.2f, 0.1f));
+    EXPECT_EQ(coated_diffuse(R"("albedo": [0.7, 0.2, 0.1])").base.reflectance, Color(0.7f, 0.2f, 0.1f));
     CoatedDiffuseLobe iso = coated_diffuse(R"("roughness": 0.05)");
     EXPECT_EQ(iso.coat.distribution.alpha_x, 0.05f);
     EXPECT_EQ(iso.coat.distribution.alpha_y, 0.05f);
@@ -54,7 +54,7 @@ TEST(SceneCoatedMaterials, CoatedDiffuseKeysAreRead) {
     EXPECT_EQ(aniso.coat.distribution.alpha_y, 0.3f);
     EXPECT_EQ(coated_diffuse(R"("ior": 1.33)").coat.eta, 1.33f);
     EXPECT_EQ(coated_diffuse(R"("thickness": 0.2)").thickness, 0.2f);
-    EXPECT_EQ(coated_diffuse(R"("medium_albedo": [0.9, 0.5, 0.1])").medium_albedo, Rgb(0.9f, 0.5f, 0.1f));
+    EXPECT_EQ(coated_diffuse(R"("medium_albedo": [0.9, 0.5, 0.1])").medium_albedo, Color(0.9f, 0.5f, 0.1f));
     EXPECT_EQ(coated_diffuse(R"("g": -0.3)").g, -0.3f);
     EXPECT_EQ(coated_diffuse(R"("maxdepth": 3)").max_depth, 3);
     EXPECT_EQ(coated_diffuse(R"("nsamples": 4)").n_samples, 4);
@@ -63,7 +63,7 @@ TEST(SceneCoatedMaterials, CoatedDiffuseKeysAreRead) {
 TEST(SceneCoatedMaterials, DesignDocExampleLoads) {
     // DESIGN.md's "plastic".
     CoatedDiffuseLobe d = coated_diffuse(R"("albedo": [0.7, 0.2, 0.2], "roughness": 0.05, "ior": 1.5, "thickness": 0.01)");
-    EXPECT_EQ(d.base.reflectance, Rgb(0.7f, 0.2f, 0.2f));
+    EXPECT_EQ(d.base.reflectance, Color(0.7f, 0.2f, 0.2f));
     EXPECT_EQ(d.coat.distribution.alpha_x, 0.05f);
 }
 
@@ -73,10 +73,10 @@ TEST(SceneCoatedMaterials, CoatedConductorDefaultsArePbrts) {
     EXPECT_TRUE(c.coat.distribution.effectively_smooth());
     EXPECT_TRUE(c.base.distribution.effectively_smooth());
     // Copper, relative to the coat.
-    EXPECT_EQ(c.base.eta, Rgb(0.216561f, 0.958162f, 1.165808f) / 1.5f);
-    EXPECT_EQ(c.base.k, Rgb(3.637741f, 2.577065f, 2.393857f) / 1.5f);
+    EXPECT_EQ(c.base.eta, Color(0.216561f, 0.958162f, 1.165808f) / 1.5f);
+    EXPECT_EQ(c.base.k, Color(3.637741f, 2.577065f, 2.393857f) / 1.5f);
     EXPECT_EQ(c.thickness, 0.01f);
-    EXPECT_EQ(c.medium_albedo, Rgb(0.0f));
+    EXPECT_EQ(c.medium_albedo, Color(0.0f));
     EXPECT_EQ(c.max_depth, 10);
     EXPECT_EQ(c.n_samples, 1);
 }
@@ -89,16 +89,16 @@ TEST(SceneCoatedMaterials, CoatedConductorKeysAreRead) {
     EXPECT_EQ(rough.base.distribution.alpha_y, 0.3f);
     CoatedConductorLobe gold = coated_conductor(R"("ior": 1.25, "conductor_eta": [0.2, 0.4, 1.5], "conductor_k": [4, 2.5, 2])");
     EXPECT_EQ(gold.coat.eta, 1.25f);
-    EXPECT_EQ(gold.base.eta, Rgb(0.2f, 0.4f, 1.5f) / 1.25f);
-    EXPECT_EQ(gold.base.k, Rgb(4.0f, 2.5f, 2.0f) / 1.25f);
+    EXPECT_EQ(gold.base.eta, Color(0.2f, 0.4f, 1.5f) / 1.25f);
+    EXPECT_EQ(gold.base.k, Color(4.0f, 2.5f, 2.0f) / 1.25f);
     // Only eta given: k stays copper's (pbrt-v4 defaults each separately).
-    EXPECT_EQ(coated_conductor(R"("conductor_eta": 1)").base.k, Rgb(3.637741f, 2.577065f, 2.393857f) / 1.5f);
+    EXPECT_EQ(coated_conductor(R"("conductor_eta": 1)").base.k, Color(3.637741f, 2.577065f, 2.393857f) / 1.5f);
     CoatedConductorLobe artist = coated_conductor(R"("reflectance": [0.64, 0.64, 0.64])");
-    EXPECT_EQ(artist.base.eta, Rgb(1.0f / 1.5f));
+    EXPECT_EQ(artist.base.eta, Color(1.0f / 1.5f));
     EXPECT_NEAR(artist.base.k[0], 2.0f * 0.8f / 0.6f / 1.5f, 1e-5f);
     CoatedConductorLobe medium = coated_conductor(R"("thickness": 0.5, "medium_albedo": 0.8, "g": 0.5, "maxdepth": 20, "nsamples": 2)");
     EXPECT_EQ(medium.thickness, 0.5f);
-    EXPECT_EQ(medium.medium_albedo, Rgb(0.8f));
+    EXPECT_EQ(medium.medium_albedo, Color(0.8f));
     EXPECT_EQ(medium.g, 0.5f);
     EXPECT_EQ(medium.max_depth, 20);
     EXPECT_EQ(medium.n_samples, 2);
@@ -139,9 +139,9 @@ TEST(SceneCoatedMaterials, ParametersMayBeTextures) {
     ASSERT_TRUE(s.materials.at(1).textured);
     auto at = [](float u, float v) { return TextureContext{Vec2f(u, v), Vec3f(0.0f)}; };
     auto diffuse_at = [&](float u) { return std::get<CoatedDiffuseLobe>(build_bsdf(s.materials[0], s.textures, at(u, 0.5f)).lobes[0]); };
-    EXPECT_EQ(diffuse_at(0.5f).base.reflectance, Rgb(0.25f));
+    EXPECT_EQ(diffuse_at(0.5f).base.reflectance, Color(0.25f));
     EXPECT_EQ(diffuse_at(0.5f).coat.distribution.alpha_x, 0.25f);
-    EXPECT_EQ(diffuse_at(1.5f).base.reflectance, Rgb(1.0f));
+    EXPECT_EQ(diffuse_at(1.5f).base.reflectance, Color(1.0f));
     EXPECT_EQ(diffuse_at(1.5f).coat.distribution.alpha_y, 1.0f);
     auto conductor_at = [&](float u) { return std::get<CoatedConductorLobe>(build_bsdf(s.materials[1], s.textures, at(u, 0.5f)).lobes[0]); };
     EXPECT_LT(conductor_at(0.5f).base.k.max_component(), conductor_at(1.5f).base.k.max_component());

@@ -62,18 +62,18 @@ T only_lobe(const Scene& s, size_t index) {
 
 TEST(SceneLoaderMaterials, DiffuseAlbedoIsRead) {
     Scene grey = load_json(R"({"materials": {"a": {"type": "diffuse", "albedo": 0.25}}})");
-    EXPECT_EQ(only_lobe<LambertianLobe>(grey, 0).reflectance, Rgb(0.25f));
+    EXPECT_EQ(only_lobe<LambertianLobe>(grey, 0).reflectance, Color(0.25f));
     Scene rgb = load_json(R"({"materials": {"a": {"type": "diffuse", "albedo": [0.1, 0.2, 0.3]}}})");
-    EXPECT_EQ(only_lobe<LambertianLobe>(rgb, 0).reflectance, Rgb(0.1f, 0.2f, 0.3f));
+    EXPECT_EQ(only_lobe<LambertianLobe>(rgb, 0).reflectance, Color(0.1f, 0.2f, 0.3f));
     Scene plain = load_json(R"({"materials": {"a": {"type": "diffuse"}}})");
-    EXPECT_EQ(only_lobe<LambertianLobe>(plain, 0).reflectance, Rgb(0.5f));
+    EXPECT_EQ(only_lobe<LambertianLobe>(plain, 0).reflectance, Color(0.5f));
 }
 
 TEST(SceneLoaderMaterials, MirrorAlbedoIsRead) {
     Scene s = load_json(R"({"materials": {"a": {"type": "mirror", "albedo": 0.8},
                                           "b": {"type": "mirror"}}})");
-    EXPECT_EQ(only_lobe<SpecularReflectionLobe>(s, 0).reflectance, Rgb(0.8f));
-    EXPECT_EQ(only_lobe<SpecularReflectionLobe>(s, 1).reflectance, Rgb(1.0f));
+    EXPECT_EQ(only_lobe<SpecularReflectionLobe>(s, 0).reflectance, Color(0.8f));
+    EXPECT_EQ(only_lobe<SpecularReflectionLobe>(s, 1).reflectance, Color(1.0f));
 }
 
 TEST(SceneLoaderMaterials, DielectricIorAndTintAreRead) {
@@ -83,10 +83,10 @@ TEST(SceneLoaderMaterials, DielectricIorAndTintAreRead) {
                                           "c": {"type": "dielectric", "ior": 1}}})");
     auto a = only_lobe<FresnelSpecularLobe>(s, 0);
     EXPECT_EQ(a.eta, 2.4f);
-    EXPECT_EQ(a.tint, Rgb(1.0f, 0.5f, 0.25f));
+    EXPECT_EQ(a.tint, Color(1.0f, 0.5f, 0.25f));
     auto b = only_lobe<FresnelSpecularLobe>(s, 1);
     EXPECT_EQ(b.eta, 1.5f);
-    EXPECT_EQ(b.tint, Rgb(1.0f));
+    EXPECT_EQ(b.tint, Color(1.0f));
     // An index of 1 (an interface that does not bend light) is allowed.
     EXPECT_EQ(only_lobe<FresnelSpecularLobe>(s, 2).eta, 1.0f);
     EXPECT_EQ(load_error(R"({"materials": {"a": {"type": "dielectric", "ior": 0}}})").message(),
@@ -110,10 +110,10 @@ TEST(SceneLoaderMaterials, TransmissionIorAndTintAreRead) {
                                           "b": {"type": "transmission"}}})");
     auto a = only_lobe<SpecularTransmissionLobe>(s, 0);
     EXPECT_EQ(a.eta, 1.33f);
-    EXPECT_EQ(a.tint, Rgb(0.5f));
+    EXPECT_EQ(a.tint, Color(0.5f));
     auto b = only_lobe<SpecularTransmissionLobe>(s, 1);
     EXPECT_EQ(b.eta, 1.5f);
-    EXPECT_EQ(b.tint, Rgb(1.0f));
+    EXPECT_EQ(b.tint, Color(1.0f));
     EXPECT_EQ(load_error(R"({"materials": {"a": {"type": "transmission", "fresnel": "exact"}}})")
                   .message(),
               "unknown key \"fresnel\"; expected one of: alpha, bump_map, ior, normal_map, normal_map_convention, tint, type");
@@ -126,15 +126,15 @@ TEST(SceneLoaderMaterials, MixConcatenatesTheLobesInOrder) {
         {"type": "transmission", "ior": 2}]}}})");
     const Bsdf& bsdf = s.materials[0].bsdf;
     ASSERT_EQ(bsdf.lobe_count, 4u);
-    EXPECT_EQ(std::get<LambertianLobe>(bsdf.lobes[0]).reflectance, Rgb(0.5f));
-    EXPECT_EQ(std::get<SpecularReflectionLobe>(bsdf.lobes[1]).reflectance, Rgb(0.25f));
+    EXPECT_EQ(std::get<LambertianLobe>(bsdf.lobes[0]).reflectance, Color(0.5f));
+    EXPECT_EQ(std::get<SpecularReflectionLobe>(bsdf.lobes[1]).reflectance, Color(0.25f));
     EXPECT_EQ(std::get<FresnelSpecularLobe>(bsdf.lobes[2]).eta, 1.33f);
     EXPECT_TRUE(std::get<FresnelSpecularLobe>(bsdf.lobes[2]).schlick);
     EXPECT_EQ(std::get<SpecularTransmissionLobe>(bsdf.lobes[3]).eta, 2.0f);
     // One part is a mix too.
     Scene one =
         load_json(R"({"materials": {"m": {"type": "mix", "lobes": [{"type": "mirror"}]}}})");
-    EXPECT_EQ(only_lobe<SpecularReflectionLobe>(one, 0).reflectance, Rgb(1.0f));
+    EXPECT_EQ(only_lobe<SpecularReflectionLobe>(one, 0).reflectance, Color(1.0f));
 }
 
 TEST(SceneLoaderMaterials, MixPartsAreCheckedLikeMaterials) {

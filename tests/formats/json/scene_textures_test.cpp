@@ -59,24 +59,24 @@ constexpr const char* kImage = R"("file": "textures/rgb_2x2.png")";
 TEST(SceneTextures, ConstantValueIsRead) {
     EXPECT_EQ(texture_named<ConstantTexture>(load_textures(R"("c": {"type": "constant", "value": [1, 2, 3]})"), "c")
                   .value,
-              Color(1, 2, 3));
-    EXPECT_EQ(texture_named<ConstantTexture>(load_textures(R"("c": {"type": "constant"})"), "c").value, Color(0.0f));
+              Rgb(1, 2, 3));
+    EXPECT_EQ(texture_named<ConstantTexture>(load_textures(R"("c": {"type": "constant"})"), "c").value, Rgb(0.0f));
 }
 
 TEST(SceneTextures, CheckerboardKeysAreRead) {
     const CheckerboardTexture defaults =
         texture_named<CheckerboardTexture>(load_textures(R"("c": {"type": "checkerboard"})"), "c");
-    EXPECT_EQ(defaults.color0.value, Color(1.0f));  // pbrt-v4's tex1 and tex2 defaults
-    EXPECT_EQ(defaults.color1.value, Color(0.0f));
+    EXPECT_EQ(defaults.color0.value, Rgb(1.0f));  // pbrt-v4's tex1 and tex2 defaults
+    EXPECT_EQ(defaults.color1.value, Rgb(0.0f));
     EXPECT_EQ(defaults.uv.scale, Vec2f(1.0f, 1.0f));
     EXPECT_EQ(defaults.uv.offset, Vec2f(0.0f, 0.0f));
     const CheckerboardTexture c = texture_named<CheckerboardTexture>(
         load_textures(R"("c": {"type": "checkerboard", "color0": 0.2, "color1": [0.1, 0.2, 0.3],
                                "uv_scale": [8, 4], "uv_offset": [0.5, -0.25]})"),
         "c");
-    EXPECT_EQ(c.color0.value, Color(0.2f));
+    EXPECT_EQ(c.color0.value, Rgb(0.2f));
     EXPECT_FALSE(c.color0.is_textured());
-    EXPECT_EQ(c.color1.value, Color(0.1f, 0.2f, 0.3f));
+    EXPECT_EQ(c.color1.value, Rgb(0.1f, 0.2f, 0.3f));
     EXPECT_EQ(c.uv.scale, Vec2f(8.0f, 4.0f));
     EXPECT_EQ(c.uv.offset, Vec2f(0.5f, -0.25f));
 }
@@ -116,8 +116,8 @@ TEST(SceneTextures, ImageIsLoadedWithItsColorspace) {
     // rgb_2x2.png: top row red, green; bottom row blue, white.
     const Scene srgb = load_textures(std::string(R"("i": {"type": "image", "filter": "point", )") + kImage + "}");
     const uint32_t i = 0;
-    EXPECT_EQ(srgb.textures.color(i, at(0.25f, 0.75f)), Color(1, 0, 0));
-    EXPECT_EQ(srgb.textures.color(i, at(0.25f, 0.25f)), Color(0, 0, 1));
+    EXPECT_EQ(srgb.textures.color(i, at(0.25f, 0.75f)), Rgb(1, 0, 0));
+    EXPECT_EQ(srgb.textures.color(i, at(0.25f, 0.25f)), Rgb(0, 0, 1));
     EXPECT_EQ(srgb.textures.image(0).width, 2);
     EXPECT_EQ(srgb.textures.image(0).byte_values[128], decode_srgb(128.0f / 255.0f));
     const Scene linear = load_textures(std::string(R"("i": {"type": "image", "colorspace": "linear", )") + kImage + "}");
@@ -133,19 +133,19 @@ TEST(SceneTextures, ScaleAndMixKeysAreRead) {
     const ScaleTexture sc = texture_named<ScaleTexture>(s, "s");
     EXPECT_TRUE(sc.tex.is_textured());
     EXPECT_EQ(sc.scale.value, 3.0f);
-    EXPECT_EQ(s.textures.color(sc.tex.texture, at(0, 0)), Color(0.25f));
+    EXPECT_EQ(s.textures.color(sc.tex.texture, at(0, 0)), Rgb(0.25f));
     const MixTexture m = texture_named<MixTexture>(s, "m");
-    EXPECT_EQ(m.tex1.value, Color(0.1f));
+    EXPECT_EQ(m.tex1.value, Rgb(0.1f));
     EXPECT_TRUE(m.tex2.is_textured());
     EXPECT_TRUE(m.amount.is_textured());
     EXPECT_EQ(m.amount.lo, 0.0f);  // a textured amount is clamped to [0, 1]
     EXPECT_EQ(m.amount.hi, 1.0f);
     // pbrt-v4's defaults: mix of 0 and 1 by 0.5; scale of 1 by 1.
     const MixTexture d = texture_named<MixTexture>(s, "d");
-    EXPECT_EQ(d.tex1.value, Color(0.0f));
-    EXPECT_EQ(d.tex2.value, Color(1.0f));
+    EXPECT_EQ(d.tex1.value, Rgb(0.0f));
+    EXPECT_EQ(d.tex2.value, Rgb(1.0f));
     EXPECT_EQ(d.amount.value, 0.5f);
-    EXPECT_EQ(s.textures.color(uint32_t(s.texture_names.size() - 1), at(0, 0)), Color(1.0f));
+    EXPECT_EQ(s.textures.color(uint32_t(s.texture_names.size() - 1), at(0, 0)), Rgb(1.0f));
 }
 
 // ---- material parameters
@@ -169,7 +169,7 @@ TEST(SceneTextures, MaterialParameterTakesANameAnInlineTextureOrAConstant) {
 
     const Scene constant = load_textures(R"("c": {"type": "checkerboard"})", "[0.1, 0.2, 0.3]");
     EXPECT_FALSE(constant.materials[0].textured);
-    EXPECT_EQ(albedo_param(constant).value, Color(0.1f, 0.2f, 0.3f));
+    EXPECT_EQ(albedo_param(constant).value, Rgb(0.1f, 0.2f, 0.3f));
 }
 
 TEST(SceneTextures, TexturesMayNameTexturesDefinedLater) {
@@ -178,7 +178,7 @@ TEST(SceneTextures, TexturesMayNameTexturesDefinedLater) {
                                   R"({"texture": "outer"})");
     // Inputs come first: inner is texture 0.
     EXPECT_EQ(s.texture_names, (std::vector<std::string>{"inner", "outer"}));
-    EXPECT_EQ(s.textures.color(1, at(0, 0)), Color(0.5f));
+    EXPECT_EQ(s.textures.color(1, at(0, 0)), Rgb(0.5f));
     EXPECT_EQ(albedo_param(s).texture, 1u);
 }
 
