@@ -1,9 +1,9 @@
 // How the `metal` shorthand's RGB eta and k (materials/metal_table.h, fitted by
-// tools/metals/make_metal_table.py) relate to the named spectra: the table is not the RGB
+// tools/metals/make_metal_table) relate to the named spectra: the table is not the RGB
 // reduction of the eta and k spectra (reflectance_rgb of "metal-Au-eta" is a poorer stand-in,
 // because Fresnel reflectance is far from linear in eta and k), but the per-channel (eta, k)
 // whose Fresnel curve best matches the metal's spectral Fresnel reflectance reduced to RGB.
-// Checked here from the named spectra, independently of the Python generator, against the
+// Checked here from the named spectra, independently of the generator, against the
 // errors tools/metals/README.md documents.
 #include <gtest/gtest.h>
 
@@ -26,7 +26,7 @@ struct PbrtMetal {
     float documented_error;
 };
 
-// The metals whose spectra tools/metals took from pbrt-v4 (Cr, Fe and Ti come from Johnson and
+// The metals whose spectra are pbrt-v4's named spectra (Cr, Fe and Ti come from Johnson and
 // Christy, which pbrt-v4 does not name).
 constexpr PbrtMetal kPbrtMetals[] = {{Metal::kAu, "Au", 0.0076f},
                                      {Metal::kAg, "Ag", 0.004f},

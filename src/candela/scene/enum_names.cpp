@@ -17,7 +17,7 @@ constexpr std::array<std::string_view, 2> kSamplerTypeNames = {"independent", "s
 constexpr std::array<std::string_view, 4> kFilterTypeNames = {"box", "tent", "gaussian", "smallpt"};
 constexpr std::array<std::string_view, 4> kTonemapNames = {"clamp", "exposure", "reinhard", "aces"};
 constexpr std::array<std::string_view, 2> kTransferNames = {"srgb", "gamma"};
-// In the order of materials/metal_table.h (tools/metals/make_metal_table.py's METALS).
+// In the order of materials/metal_table.h's enum Metal.
 constexpr std::array<std::string_view, kMetalCount> kMetalNames = {"Au", "Ag", "Cu", "Al",
                                                                    "Cr", "Fe", "Ti", "CuZn"};
 
