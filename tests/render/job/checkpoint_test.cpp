@@ -15,6 +15,7 @@
 
 #include "candela/core/error.h"
 #include "candela/core/hash64.h"
+#include "support/render_identity.h"
 #include "support/scene_error_of.h"
 #include "support/test_files.h"
 
@@ -34,17 +35,7 @@ using test::read_bytes;
 
 void write_bytes(const fs::path& file, const std::string& bytes) { std::ofstream(file, std::ios::binary) << bytes; }
 
-RenderIdentity identity() {
-    RenderIdentity id;
-    id.candela_version = "0.1.0";
-    id.integrator = "path";
-    id.sampler = "independent";
-    id.content_hash = 0x0123456789abcdefull;
-    id.seed = 42;
-    id.width = 5;
-    id.height = 3;
-    return id;
-}
+RenderIdentity identity() { return test::render_identity_of_size(5, 3); }
 
 // Sums that need all 64 bits to round-trip: thirds, a denormal, a negative zero, huge values.
 RenderState state() {

@@ -18,6 +18,7 @@
 #include "candela/render/shard.h"
 #include "candela/render/job/shard_merge.h"
 #include "candela/render/job/shard_part.h"
+#include "support/render_identity.h"
 #include "support/scene_error_of.h"
 #include "support/test_files.h"
 
@@ -81,17 +82,7 @@ TEST(ParseShard, AcceptsOnlyAPartOfN) {
         EXPECT_FALSE(parse_shard(bad).has_value()) << '"' << bad << '"';
 }
 
-RenderIdentity identity() {
-    RenderIdentity id;
-    id.candela_version = "0.1.0";
-    id.integrator = "path";
-    id.sampler = "independent";
-    id.content_hash = 0x0123456789abcdefull;
-    id.seed = 42;
-    id.width = 37;
-    id.height = 21;
-    return id;
-}
+RenderIdentity identity() { return test::render_identity_of_size(37, 21); }
 
 // A film whose values need all 64 bits: thirds, a denormal, a negative zero; weight sums if asked.
 RenderState state(bool weighted, uint32_t samples = 4) {
