@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
     }
     const fs::path folder = argv[1];
     fs::create_directories(folder);
-    const candela::FilmSettings film;
+    const candela::DisplayEncoding film;
     candela::write_image(folder / "flat_4x3.hdr", test_image(4, 3), film);
     candela::write_image(folder / "rle_19x5.hdr", test_image(19, 5), film);
     candela::write_image(folder / "rle_40x2.hdr", candela::Image(40, 2), film);  // long runs of zeros
