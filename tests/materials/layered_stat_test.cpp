@@ -33,7 +33,7 @@
 #include <vector>
 
 #include "candela/materials/bsdf.h"
-#include "candela/materials/henyey_greenstein.h"
+#include "candela/sampling/henyey_greenstein.h"
 #include "candela/materials/layered.h"
 #include "candela/sampling/rng.h"
 #include "candela/sampling/warps.h"

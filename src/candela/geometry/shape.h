@@ -18,6 +18,12 @@ struct Shape {
     // Spectral mode: the emission as a spectrum of the scene's textures, normalized to luminance
     // 1 and scaled; 0xffffffff: the illuminant uplift of `emission`.
     uint32_t emission_spectrum = 0xffffffffu;
+    // The media on either side (indices into the scene's media; 0xffffffff: none, vacuum), pbrt-
+    // v4's MediumInterface: `interior` is the side the normal points away from. Equal: the shape
+    // is no boundary between media, and a ray crossing it stays in the medium it was in.
+    uint32_t interior = 0xffffffffu;
+    uint32_t exterior = 0xffffffffu;
+    bool is_medium_boundary() const { return interior != exterior; }
 };
 
 }  // namespace candela

@@ -8,7 +8,7 @@
 #include <bit>
 #include <cfloat>
 
-#include "candela/materials/henyey_greenstein.h"
+#include "candela/sampling/henyey_greenstein.h"
 #include "candela/sampling/rng.h"
 
 namespace candela {

@@ -38,6 +38,11 @@ struct Material {
     // A blend: which of two other materials shades is chosen at each hit (render/
     // material_choice.h); bsdf is then empty and surface holds only the alpha.
     std::optional<MaterialBlend> blend;
+    // pbrt-v4's `interface`: no surface at all, only a boundary between media. Its one lobe is
+    // a pass-through (index-matched specular transmission), so the surface integrators (path,
+    // bsdf, whitted) go straight through it as pbrt-v4's path does; volpath skips it without
+    // counting a bounce and lets shadow rays through it.
+    bool interface = false;
 };
 
 // Gives material `m` the surface parameters `s`.

@@ -19,6 +19,7 @@
 #include "candela/lights/delta_light.h"
 #include "candela/lights/environment_light.h"
 #include "candela/materials/material.h"
+#include "candela/media/medium.h"
 #include "candela/math/rgb.h"
 #include "candela/math/transform.h"
 #include "candela/scene/render_settings.h"
@@ -92,6 +93,10 @@ struct Scene {
     std::vector<Instance> instances;
     std::optional<EnvironmentSettings> environment;
     std::vector<DeltaLightSettings> delta_lights;
+    // Participating media (media/medium.h), named; shapes index them (Shape::interior/exterior).
+    std::vector<Medium> media;
+    std::vector<std::string> medium_names;  // parallel to media
+    uint32_t camera_medium = kNoMedium;     // the medium the camera sits in
     // Problems that do not stop loading (e.g. an environment map that is not 2:1), one line each,
     // already located ("file: message"); the CLI prints them as warnings.
     std::vector<std::string> warnings;

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "candela/materials/henyey_greenstein.h"
+#include "candela/sampling/henyey_greenstein.h"
 #include "candela/sampling/rng.h"
 #include "materials/lobe_cases.h"
 

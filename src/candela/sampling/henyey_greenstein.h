@@ -1,6 +1,7 @@
 #pragma once
-// The Henyey-Greenstein phase function (Henyey & Greenstein 1941), the scattering of the medium
-// between a layered lobe's interfaces (layered.h). Both directions point away from the scattering
+// The Henyey-Greenstein phase function (Henyey & Greenstein 1941): the phase function of
+// participating media (media/) and of the medium between a layered lobe's interfaces
+// (materials/layered.h). Both directions point away from the scattering
 // point, as wo and wi of a BSDF do (pbrt-v4's convention), so light travelling along -wo that
 // keeps its direction leaves along wi = -wo, where cos = dot(wo, wi) = -1:
 //   p(wo, wi) = (1 - g^2) / (4 pi (1 + g^2 + 2 g dot(wo, wi))^(3/2))
