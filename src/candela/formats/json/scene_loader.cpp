@@ -22,8 +22,8 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 9> kSections = {"integrator", "sampler", "camera",  "film",  "textures",
-                                                       "materials",  "objects", "shapes", "lights"};
+constexpr std::array<std::string_view, 10> kSections = {"integrator", "sampler", "media",   "camera", "film",
+                                                        "textures",   "materials", "objects", "shapes", "lights"};
 // In the order of CameraType and FovAxis (camera_settings.h).
 constexpr std::array<std::string_view, 2> kCameraTypes = {"perspective", "orthographic"};
 constexpr std::array<std::string_view, 5> kFovAxes = {"x", "y", "diagonal", "smaller", "larger"};
@@ -212,6 +212,7 @@ CameraBasis read_camera_basis(const JsonCursor& v) {
 }
 
 void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget* budget) {
+    c.has("medium");  // the medium it sits in: read by load_scene once the media are
     if (auto type = c.get("type"))
         camera.type = enum_of<CameraType>(type->choice("camera type", kCameraTypes), kCameraTypes);
     if (auto transform = c.get("transform")) {
@@ -311,7 +312,7 @@ std::string read_text_file(const std::filesystem::path& file) {
 // pbrt-v4 warns the same way: a black image after hours of rendering is a poor way to find out.
 void warn_if_unlit(Scene& scene) {
     const IntegratorType t = scene.integrator.type;
-    if (t != IntegratorType::kPath && t != IntegratorType::kBsdf && t != IntegratorType::kWhitted) return;
+    if (t != IntegratorType::kPath && t != IntegratorType::kBsdf && t != IntegratorType::kWhitted && t != IntegratorType::kVolPath) return;
     if (scene.environment || !scene.delta_lights.empty()) return;
     for (const Shape& shape : scene.shapes)
         if (!shape.emission.is_black()) return;
@@ -378,6 +379,11 @@ Scene load_scene_from_string(std::string_view json, const std::filesystem::path&
                                          "the adaptive sampler's per-pixel statistics"))
             root.get("sampler")->get("adaptive")->fail(*refused);
     if (auto c = root.get("film")) read_film(*c, scene.film, scene.camera, scene.output_file);
+    // The media, after the film (charged first), before the camera's medium and the shapes, which
+    // name them.
+    if (auto c = root.get("media")) read_media(*c, scene, budget);
+    if (camera)
+        if (auto v = camera->get("medium")) scene.camera_medium = medium_index(*v, scene);
     if (auto c = root.get("textures")) read_textures(*c, scene);
     if (auto c = root.get("materials")) read_materials(*c, scene);
     std::vector<ObjectBounds> objects;
