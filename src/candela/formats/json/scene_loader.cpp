@@ -316,11 +316,31 @@ void warn_if_unlit(Scene& scene) {
     if (scene.environment || !scene.delta_lights.empty()) return;
     for (const Shape& shape : scene.shapes)
         if (!shape.emission.is_black()) return;
+    // An emitting medium lights the scene for volpath (pbrt-v4 counts it as a light too).
+    if (t == IntegratorType::kVolPath)
+        for (const Medium& m : scene.media)
+            if (medium_emissive(m)) return;
     scene.warnings.push_back(
         SceneError(SourceLocation{scene.file.string(), 0, 0, ""},
                    fmt::format("the scene has no lights (no shape has an emission and there is no "
                                "environment, point, spot or directional light); the {} integrator "
                                "will render a black image",
+                               integrator_type_name(t)))
+            .formatted());
+}
+
+// pbrt-v4 warns the same way (cpu/render.cpp): only volpath scatters in media; the others render
+// the scene as if the media were vacuum.
+void warn_if_media_ignored(Scene& scene) {
+    const IntegratorType t = scene.integrator.type;
+    if (t == IntegratorType::kVolPath) return;
+    bool in_media = scene.camera_medium != kNoMedium;
+    for (const Shape& shape : scene.shapes) in_media |= shape.interior != kNoMedium || shape.exterior != kNoMedium;
+    if (!in_media) return;
+    scene.warnings.push_back(
+        SceneError(SourceLocation{scene.file.string(), 0, 0, ""},
+                   fmt::format("the scene has participating media but the {} integrator ignores them (it renders "
+                               "them as vacuum); use \"volpath\"",
                                integrator_type_name(t)))
             .formatted());
 }
@@ -392,6 +412,7 @@ Scene load_scene_from_string(std::string_view json, const std::filesystem::path&
     if (auto c = root.get("lights")) read_lights(*c, folder, scene, budget);
     load_texture_images(scene, document, budget);
     warn_if_unlit(scene);
+    warn_if_media_ignored(scene);
     return scene;
 }
 

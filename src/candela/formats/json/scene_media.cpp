@@ -12,7 +12,6 @@
 #include "candela/formats/json/scene_spectra.h"
 #include "candela/media/scattering_presets.h"
 #include "candela/scene/enum_names.h"
-#include "candela/spectrum/rgb_to_spectrum.h"
 #include "candela/spectrum/spectrum_rgb.h"
 
 namespace candela {
@@ -20,14 +19,6 @@ namespace candela {
 namespace {
 
 constexpr std::array<std::string_view, 1> kMediumTypes = {"homogeneous"};
-
-// A spectrum tabulated at every nm from a function of the wavelength.
-template <class F>
-DenseSpectrum tabulate(F&& f) {
-    DenseSpectrum s;
-    for (int i = 0; i < kDenseSamples; ++i) s.v[size_t(i)] = f(float(kDenseLambdaMin + i));
-    return s;
-}
 
 // pbrt-v4's `homogeneous`: sigma_a and sigma_s (default 1 each, or a `preset`'s), `scale`, `g`,
 // and emission `Le` (default none) with `Le_scale`.
@@ -66,11 +57,6 @@ HomogeneousMedium read_homogeneous(JsonCursor& c, const Scene& scene) {
 }
 
 }  // namespace
-
-MediumSpectrum medium_coefficient(const Rgb& rgb) {
-    const RgbSpectrum s = rgb_unbounded_spectrum(rgb);
-    return MediumSpectrum{rgb, tabulate([&](float lambda) { return s(lambda); })};
-}
 
 MediumSpectrum read_medium_coefficient(const JsonCursor& c, const Scene& scene) {
     if (std::optional<DenseSpectrum> s = read_spectrum(c, scene.file.parent_path())) {
@@ -112,8 +98,7 @@ std::optional<MediumSpectrum> read_medium_emission(JsonCursor& c, const Scene& s
     } else {
         const Rgb rgb = Le->colour(Bounds::at_least(0));
         if (!rgb.is_finite()) Le->fail("a medium's emission must be finite");
-        const RgbSpectrum illuminant = rgb_illuminant_spectrum(rgb);
-        m = MediumSpectrum{rgb, tabulate([&](float lambda) { return illuminant(lambda); })};
+        m = medium_emission(rgb);
     }
     m = scaled(m, scale);
     if (m.is_black()) return std::nullopt;

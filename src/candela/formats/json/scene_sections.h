@@ -54,8 +54,8 @@ uint32_t medium_index(const JsonCursor& c, const Scene& scene);
 // spectrum, >= 0; an RGB value's spectrum is pbrt-v4's RGBUnboundedSpectrum), `scale` (default
 // 1), `g` (default 0), and the emission `Le` times a number `Le_scale` (nullopt without `Le` or
 // when black; a spectrum normalized to luminance 1, an RGB value's illuminant uplift, as area
-// lights' emission). A grid's `Le_scale` array is the grid reader's to read.
-MediumSpectrum medium_coefficient(const Rgb& rgb);
+// lights' emission). A grid's `Le_scale` array is the grid reader's to read. An RGB value's
+// spectra: medium_coefficient and medium_emission (media/medium_spectrum.h).
 MediumSpectrum read_medium_coefficient(const JsonCursor& c, const Scene& scene);
 float read_medium_scale(JsonCursor& medium);
 float read_medium_g(JsonCursor& medium);
