@@ -34,7 +34,7 @@ namespace fs = std::filesystem;
 // The kinds of malformed input issue 6 lists; each must have an entry.
 enum Kind {
     kJsonSyntax, kEncoding, kDeepNesting, kStructure, kUnknownName, kNumber, kCamera, kLight,
-    kDegenerate, kFileAccess, kObj, kPly, kImage, kPbrt, kKindCount
+    kDegenerate, kFileAccess, kObj, kPly, kImage, kPbrt, kMedium, kKindCount
 };
 enum Outcome { kError, kWarning };
 
@@ -58,6 +58,13 @@ void PrintTo(const BadInput& bad, std::ostream* os) { *os << bad.scene; }
 // object's opening brace; a JSON syntax error where the parser stopped. In a mesh or image file:
 // the line (OBJ, ASCII PLY, PLY headers), or the element, record and byte offset (binary PLY).
 const BadInput kBadInputs[] = {
+    // --- participating media (issue 24)
+    {"medium_negative_sigma.json", kMedium, kError, "", 2, 55, "/media/fog/sigma_a", "expected a number >= 0, got -0.1"},
+    {"medium_unknown_name.json", kMedium, kError, "", 3, 24, "/camera/medium",
+     "unknown medium \"smoke\"; defined media: fog"},
+    {"medium_unknown_type.json", kMedium, kError, "", 2, 29, "/media/fog/type",
+     "unknown medium type \"vdb\"; expected one of: homogeneous"},
+    {"medium_sigma_overflows.json", kMedium, kError, "", 2, 55, "/media/fog/sigma_s", "1e+39"},
     // --- JSON syntax (7)
     {"comment.json", kJsonSyntax, kError, "", 2, 27, "",
      "(JSON allows no comments)"},
