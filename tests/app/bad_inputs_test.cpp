@@ -63,7 +63,7 @@ const BadInput kBadInputs[] = {
     {"medium_unknown_name.json", kMedium, kError, "", 3, 24, "/camera/medium",
      "unknown medium \"smoke\"; defined media: fog"},
     {"medium_unknown_type.json", kMedium, kError, "", 2, 29, "/media/fog/type",
-     "unknown medium type \"vdb\"; expected one of: homogeneous"},
+     "unknown medium type \"vdb\"; expected one of: cloud, homogeneous, rgbgrid, uniformgrid"},
     {"medium_sigma_overflows.json", kMedium, kError, "", 2, 55, "/media/fog/sigma_s", "1e+39"},
     // --- JSON syntax (7)
     {"comment.json", kJsonSyntax, kError, "", 2, 27, "",
