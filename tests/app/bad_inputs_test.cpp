@@ -65,6 +65,12 @@ const BadInput kBadInputs[] = {
     {"medium_unknown_type.json", kMedium, kError, "", 2, 29, "/media/fog/type",
      "unknown medium type \"vdb\"; expected one of: cloud, homogeneous, rgbgrid, uniformgrid"},
     {"medium_sigma_overflows.json", kMedium, kError, "", 2, 55, "/media/fog/sigma_s", "1e+39"},
+    {"medium_grid_size_mismatch.json", kMedium, kError, "", 2, 76, "/media/smoke/density",
+     "\"density\" has 7 numbers; size 2 x 2 x 2 needs 8"},
+    {"medium_grid_negative_density.json", kMedium, kError, "", 2, 80, "/media/smoke/density/1",
+     "expected a number >= 0, got -1"},
+    {"medium_grid_huge_size.json", kMedium, kError, "", 2, 87, "/media/smoke/sigma_s",
+     "\"sigma_s\" has 3 numbers; size 100000 x 100000 x 100000 needs 3000000000000000"},
     // --- JSON syntax (7)
     {"comment.json", kJsonSyntax, kError, "", 2, 27, "",
      "(JSON allows no comments)"},
