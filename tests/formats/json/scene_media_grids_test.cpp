@@ -146,6 +146,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "expected a number"},
         BadMedium{R"({"type": "uniformgrid", "size": [2, 0, 1], "density": []})", "/media/fog/size/1", ">= 1"},
         BadMedium{R"({"type": "uniformgrid", "size": [2, 1], "density": [1, 1]})", "/media/fog/size", "[nx, ny, nz]"},
+        BadMedium{R"({"type": "uniformgrid", "size": [2000000000, 2000000000, 2000000000], "density": [1]})",
+                  "/media/fog/size", "a grid of 2000000000 x 2000000000 x 2000000000 voxels is beyond any memory"},
         BadMedium{R"({"type": "uniformgrid", "size": [1, 1, 1]})", "/media/fog", "density"},
         BadMedium{R"({"type": "uniformgrid", "size": [2, 1, 1], "density": [1, 1], "temperature": [1]})",
                   "/media/fog/temperature", "\"temperature\" has 1 numbers; size 2 x 1 x 1 needs 2"},

@@ -45,8 +45,13 @@ struct GridSize {
 };
 
 GridSize read_size(JsonCursor& c) {
-    const std::vector<JsonCursor> e = c.require("size").elements(3, "[nx, ny, nz], three integers >= 1");
-    return {e[0].integer(Bounds::at_least(1)), e[1].integer(Bounds::at_least(1)), e[2].integer(Bounds::at_least(1))};
+    const JsonCursor size = c.require("size");
+    const std::vector<JsonCursor> e = size.elements(3, "[nx, ny, nz], three integers >= 1");
+    const GridSize s{e[0].integer(Bounds::at_least(1)), e[1].integer(Bounds::at_least(1)), e[2].integer(Bounds::at_least(1))};
+    // Beyond 2^48 voxels no machine holds the grid, and 3 numbers per voxel still fit 64 bits.
+    if (double(s.nx) * double(s.ny) * double(s.nz) > 0x1p48)
+        size.fail(fmt::format("a grid of {} x {} x {} voxels is beyond any memory", s.nx, s.ny, s.nz));
+    return s;
 }
 
 // Fails unless grid `key` of `c` has `n` elements (`per_voxel` numbers per voxel).
