@@ -172,5 +172,23 @@ TEST(GridField, MaxOverBoundsAnAffinelyPlacedLattice) {
     }
 }
 
+TEST(GridField, ValueOutsideTheLatticeIsTheBackground) {
+    // A VDB-like block: values at integer index coordinates from index origin (10, -3, 0), the
+    // background 0.25 beyond; medium space is index space here.
+    const AffineMap3f index_to_lattice = AffineMap3f::scale_offset(Vec3f(1.0f), Vec3f(-10.0f, 3.0f, 0.0f));
+    const GridField f = placed_field(2, 1, 1, {1.0f, 3.0f}, index_to_lattice, 0.25f);
+    EXPECT_FLOAT_EQ(f.at(Vec3f(10.0f, -3.0f, 0.0f)), 1.0f);
+    EXPECT_FLOAT_EQ(f.at(Vec3f(10.5f, -3.0f, 0.0f)), 2.0f);
+    EXPECT_FLOAT_EQ(f.at(Vec3f(9.5f, -3.0f, 0.0f)), 0.625f);   // half way to the background
+    EXPECT_FLOAT_EQ(f.at(Vec3f(10.0f, -3.5f, 0.0f)), 0.625f);
+    EXPECT_FLOAT_EQ(f.at(Vec3f(50.0f, 7.0f, -9.0f)), 0.25f);
+    // Bounds: around the samples, the largest value; far outside, the background.
+    EXPECT_FLOAT_EQ(f.max_over(Bounds3f{Vec3f(9.0f, -4.0f, -1.0f), Vec3f(12.0f, -2.0f, 1.0f)}), 3.0f);
+    EXPECT_FLOAT_EQ(f.max_over(Bounds3f{Vec3f(40.0f, 0.0f, 0.0f), Vec3f(41.0f, 1.0f, 1.0f)}), 0.25f);
+    // Control: the same values without the background read 0 outside.
+    const GridField zero = placed_field(2, 1, 1, {1.0f, 3.0f}, index_to_lattice, 0.0f);
+    EXPECT_FLOAT_EQ(zero.at(Vec3f(9.5f, -3.0f, 0.0f)), 0.5f);
+}
+
 }  // namespace
 }  // namespace candela

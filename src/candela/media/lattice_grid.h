@@ -120,14 +120,18 @@ inline AffineMap3f cell_centred_placement(const Bounds3f& bounds, int nx, int ny
     return AffineMap3f::scale_offset(scale, offset);
 }
 
-// A float lattice placed in medium space.
+// A float lattice placed in medium space, with the value it takes outside the lattice: 0 for
+// pbrt-v4's SampledGrid, a VDB grid's background for a block read out of its tree. The lattice
+// holds each value minus `outside` (whose trilinear interpolation, zero outside, plus `outside`
+// is the interpolation of the values with `outside` beyond them: the weights sum to 1).
 struct GridField {
     LatticeGrid lattice;
     AffineMap3f lattice_from_medium;  // medium-space point -> lattice coordinates
+    float outside = 0.0f;
 
     CANDELA_HD bool empty() const { return lattice.empty(); }
     CANDELA_HD float at(const Vec3f& p_medium) const {
-        return lattice.at_lattice(lattice_from_medium.apply_point(p_medium));
+        return lattice.at_lattice(lattice_from_medium.apply_point(p_medium)) + outside;
     }
     // A bound on at() over a medium-space box: the lattice box around its eight corners' images,
     // widened by 1e-4 lattice units so that points the rounding of a lookup moves just across a
@@ -140,9 +144,25 @@ struct GridField {
             q.extend(lattice_from_medium.apply_point(corner));
         }
         constexpr float kWiden = 1e-4f;
-        return lattice.max_in_lattice_box(q.lo - Vec3f(kWiden), q.hi + Vec3f(kWiden));
+        return lattice.max_in_lattice_box(q.lo - Vec3f(kWiden), q.hi + Vec3f(kWiden)) + outside;
     }
 };
+
+// The field of `values` (x fastest, nx * ny * nz) placed by `lattice_from_medium`, `outside`
+// beyond them: how a VDB grid's dense block becomes a GridField (its index-to-medium map
+// inverted, minus the block's index origin; outside = its background).
+inline GridField placed_field(int nx, int ny, int nz, std::vector<float> values, const AffineMap3f& lattice_from_medium,
+                              float outside) {
+    GridField f;
+    f.lattice.nx = nx;
+    f.lattice.ny = ny;
+    f.lattice.nz = nz;
+    for (float& v : values) v -= outside;
+    f.lattice.values = std::move(values);
+    f.lattice_from_medium = lattice_from_medium;
+    f.outside = outside;
+    return f;
+}
 
 // pbrt-v4's SampledGrid of `lattice` over `bounds`.
 inline GridField cell_centred_field(LatticeGrid lattice, const Bounds3f& bounds) {
