@@ -116,6 +116,51 @@ TEST(MajorantGrid, SegmentsAreInTheWorldRaysUnits) {
     EXPECT_EQ(short_segs.back().t1, 4.3f);
 }
 
+TEST(MajorantGrid, AxisAlignedRaysOnCellFacesAreTiledAndBounded) {
+    // Directions with zero components, origins exactly on majorant-cell faces and on the box's
+    // faces and edges: the DDA's divisions by zero and its ties between axes.
+    Rng rng(27, 28);
+    GridMedium m;
+    LatticeGrid d;
+    d.nx = 32;
+    d.ny = 16;
+    d.nz = 8;
+    for (int i = 0; i < d.nx * d.ny * d.nz; ++i) d.values.push_back(rng.next_float() < 0.3f ? 0.0f : 4 * rng.next_float());
+    m.density = cell_centred_field(std::move(d), m.box.bounds);
+    m.sigma_a = test::grey_spectrum(1.0f);
+    m.sigma_s = test::grey_spectrum(0.5f);
+    finish_grid_medium(m);
+    int rays = 0;
+    for (int axis = 0; axis < 3; ++axis)
+        for (float sign : {1.0f, -1.0f})
+            for (int k = 0; k <= 16; ++k)
+                for (int j = 0; j <= 16; j += 4) {
+                    // On the faces k/16 and j/16 of the two other axes, from outside the box.
+                    Ray ray;
+                    ray.d = Vec3f(0.0f);
+                    ray.d[axis] = sign;
+                    ray.o[axis] = sign > 0 ? -1.0f : 2.0f;
+                    ray.o[(axis + 1) % 3] = float(k) / 16;
+                    ray.o[(axis + 2) % 3] = float(j) / 16;
+                    const std::vector<MajorantSegment> segs = segments_of(m, ray, kInfinity, MediumChannels{});
+                    ASSERT_EQ(segs.size(), 16u) << axis << " " << k << " " << j;
+                    EXPECT_NEAR(segs.front().t0, 1.0f, 1e-6f);
+                    EXPECT_NEAR(segs.back().t1, 2.0f, 1e-6f);
+                    for (size_t i = 0; i < segs.size(); ++i) {
+                        if (i > 0) {
+                            EXPECT_EQ(segs[i].t0, segs[i - 1].t1);
+                        }
+                        for (int s = 0; s <= 8; ++s) {
+                            const float t = lerp(float(s) / 8, segs[i].t0, segs[i].t1);
+                            const MediumPoint mp = m.at(ray.at(t), MediumChannels{});
+                            EXPECT_LE((mp.sigma_a + mp.sigma_s)[0], segs[i].sigma_maj[0] * (1 + 1e-5f) + 1e-6f);
+                        }
+                    }
+                    ++rays;
+                }
+    EXPECT_EQ(rays, 3 * 2 * 17 * 5);
+}
+
 TEST(MajorantGrid, MissingTheBoxGivesNoSegments) {
     Rng rng(25, 26);
     Transform ctm;
