@@ -59,7 +59,9 @@ void expect_density_8x6x5(const VolumeGrid& g) {
     EXPECT_EQ(g.world_max, Vec3d(5, 8, 4));
 }
 
-TEST(NanoVdbReader, ReadsValuesBoundingBoxAndMapOfADensityGrid) { expect_density_8x6x5(read(nvdb_fixture("density_8x6x5.nvdb"))); }
+TEST(NanoVdbReader, ReadsValuesBoundingBoxAndMapOfADensityGrid) {
+    expect_density_8x6x5(read(nvdb_fixture("density_8x6x5.nvdb")));
+}
 
 TEST(NanoVdbReader, ReadsARawGridBufferAsASegmentFile) {
     expect_density_8x6x5(read(nvdb_fixture("density_8x6x5_raw.nvdb")));
@@ -73,7 +75,8 @@ TEST(NanoVdbReader, ReadsAScaledAndTranslatedMap) {
     EXPECT_EQ(g.nz, 2);
     for (int k = 0; k < 2; ++k)
         for (int j = 0; j < 2; ++j)
-            for (int i = 0; i < 3; ++i) EXPECT_EQ(g.value_at(i, j, k), 2.0f + float(i) + 10.0f * float(j) + 100.0f * float(k));
+            for (int i = 0; i < 3; ++i)
+                EXPECT_EQ(g.value_at(i, j, k), 2.0f + float(i) + 10.0f * float(j) + 100.0f * float(k));
     const double expected[3][4] = {{0.5, 0, 0, 1}, {0, 0.5, 0, -2}, {0, 0, 0.5, 3}};
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 4; ++c) EXPECT_EQ(g.index_to_world[r][c], expected[r][c]) << r << " " << c;
@@ -128,7 +131,9 @@ void expect_two_grids(const std::filesystem::path& file) {
 
 TEST(NanoVdbReader, ReadsBothGridsOfATwoSegmentFile) { expect_two_grids(nvdb_fixture("two_grids.nvdb")); }
 
-TEST(NanoVdbReader, ReadsBothGridsOfOneSegmentWithTwoGrids) { expect_two_grids(nvdb_fixture("two_grids_one_segment.nvdb")); }
+TEST(NanoVdbReader, ReadsBothGridsOfOneSegmentWithTwoGrids) {
+    expect_two_grids(nvdb_fixture("two_grids_one_segment.nvdb"));
+}
 
 TEST(NanoVdbReader, RefusesAMissingFile) {
     const std::string e = error_of([] { read("no/such/file.nvdb"); });
@@ -140,7 +145,8 @@ TEST(NanoVdbReader, RefusesAMissingGridNameListingTheNamesPresent) {
     const std::filesystem::path file = nvdb_fixture("two_grids.nvdb");
     const std::string e = error_of([&] { read(file, "densty"); });
     EXPECT_NE(e.find(file.string()), std::string::npos) << e;
-    EXPECT_NE(e.find("no grid named \"densty\"; the NanoVDB file has: \"density\", \"temperature\""), std::string::npos) << e;
+    EXPECT_NE(e.find("no grid named \"densty\"; the NanoVDB file has: \"density\", \"temperature\""), std::string::npos)
+        << e;
 }
 
 TEST(NanoVdbReader, RefusesACompressedGrid) {

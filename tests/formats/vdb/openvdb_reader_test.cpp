@@ -3,12 +3,12 @@
 // converted by NanoVDB from the grid tiles_grid() makes); and its errors, each naming the file.
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <openvdb/io/File.h>
 #include <openvdb/math/Transform.h>
 #include <openvdb/openvdb.h>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "candela/core/error.h"
@@ -53,7 +53,8 @@ openvdb::FloatGrid::Ptr density_grid() {
     for (int k = -1; k < 4; ++k)
         for (int j = 2; j < 8; ++j)
             for (int i = -3; i < 5; ++i)
-                if (!(i == 0 && j == 4 && k == 1)) acc.setValue(openvdb::Coord(i, j, k), float(1 + (i + 3) + 8 * (j - 2) + 48 * (k + 1)));
+                if (!(i == 0 && j == 4 && k == 1))
+                    acc.setValue(openvdb::Coord(i, j, k), float(1 + (i + 3) + 8 * (j - 2) + 48 * (k + 1)));
     return g;
 }
 
@@ -82,7 +83,8 @@ TEST(OpenVdbReader, ReadsValuesBoundingBoxAndMap) {
     for (int k = -1; k < 4; ++k)
         for (int j = 2; j < 8; ++j)
             for (int i = -3; i < 5; ++i)
-                ASSERT_EQ(g.value_at(i, j, k), i == 0 && j == 4 && k == 1 ? 0.0f : float(1 + (i + 3) + 8 * (j - 2) + 48 * (k + 1)));
+                ASSERT_EQ(g.value_at(i, j, k),
+                          i == 0 && j == 4 && k == 1 ? 0.0f : float(1 + (i + 3) + 8 * (j - 2) + 48 * (k + 1)));
     EXPECT_EQ(g.values[1], 2.0f);  // x fastest
     const double expected[3][4] = {{0.5, 0, 0, 1}, {0, 0.5, 0, -2}, {0, 0, 0.5, 3}};
     for (int r = 0; r < 3; ++r)
@@ -125,7 +127,8 @@ TEST(OpenVdbReader, ReadsBothGridsOfATwoGridFile) {
     EXPECT_EQ(g.value_at(5, 5, 6), 1006.0f);
     const std::string e = error_of([&] { read(file, "heat"); });
     EXPECT_NE(e.find(file.string()), std::string::npos) << e;
-    EXPECT_NE(e.find("no grid named \"heat\"; the OpenVDB file has: \"density\", \"temperature\""), std::string::npos) << e;
+    EXPECT_NE(e.find("no grid named \"heat\"; the OpenVDB file has: \"density\", \"temperature\""), std::string::npos)
+        << e;
 }
 
 TEST(OpenVdbReader, RefusesAMissingFile) {

@@ -62,7 +62,8 @@ uint64_t read_segment(NanoVdbFile& f, uint64_t offset) {
     uint64_t at = offset + L::kFileHeaderSize;
     std::vector<NanoVdbGridEntry> entries;
     for (uint16_t i = 0; i < count; ++i) {
-        const std::string meta = read_at(f, at, L::kFileMetaSize, fmt::format("the metadata of grid {}", f.grids.size() + i));
+        const std::string meta =
+            read_at(f, at, L::kFileMetaSize, fmt::format("the metadata of grid {}", f.grids.size() + i));
         const L::Bytes m(meta);
         NanoVdbGridEntry e;
         e.grid_size = m.at<uint64_t>(L::kMetaGridSize);
@@ -78,8 +79,9 @@ uint64_t read_segment(NanoVdbFile& f, uint64_t offset) {
     // The grids' buffers follow the metadata, in the same order.
     for (NanoVdbGridEntry& e : entries) {
         if (at > f.size || e.file_size > f.size - at)
-            fail(f.file, fmt::format("truncated NanoVDB file: grid \"{}\" needs {} bytes at byte {}, but the file has {} bytes",
-                                     e.name, e.file_size, at, f.size));
+            fail(f.file,
+                 fmt::format("truncated NanoVDB file: grid \"{}\" needs {} bytes at byte {}, but the file has {} bytes",
+                             e.name, e.file_size, at, f.size));
         if (e.codec == L::kCodecNone && e.file_size != e.grid_size)
             fail(f.file, fmt::format("corrupt NanoVDB file: grid \"{}\" is uncompressed but takes {} bytes in the file "
                                      "and {} in memory",
@@ -102,8 +104,9 @@ uint64_t read_raw_grid(NanoVdbFile& f, uint64_t offset) {
     e.name = c_string(g.view(L::kGridName, L::kGridNameSize));
     e.offset = offset;
     if (e.grid_size < L::kGridDataSize || e.grid_size > f.size - offset)
-        fail(f.file, fmt::format("truncated NanoVDB file: grid \"{}\" at byte {} says it has {} bytes, but the file has {}",
-                                 e.name, offset, e.grid_size, f.size));
+        fail(f.file,
+             fmt::format("truncated NanoVDB file: grid \"{}\" at byte {} says it has {} bytes, but the file has {}",
+                         e.name, offset, e.grid_size, f.size));
     f.grids.push_back(std::move(e));
     return offset + f.grids.back().grid_size;
 }
@@ -155,9 +158,9 @@ std::string read_nanovdb_grid_bytes(NanoVdbFile& f, const NanoVdbGridEntry& entr
 
 std::string nanovdb_type_name(uint32_t grid_type) {
     static constexpr std::array<const char*, 27> names = {
-        "unknown", "float", "double", "int16", "int32", "int64", "Vec3f", "Vec3d", "mask",
-        "half", "uint32", "bool", "RGBA8", "Fp4", "Fp8", "Fp16", "FpN", "Vec4f",
-        "Vec4d", "index", "on-index", "index-mask", "on-index-mask", "point-index", "Vec3u8", "Vec3u16", "uint8"};
+        "unknown", "float",  "double",   "int16",      "int32",         "int64",       "Vec3f",  "Vec3d",   "mask",
+        "half",    "uint32", "bool",     "RGBA8",      "Fp4",           "Fp8",         "Fp16",   "FpN",     "Vec4f",
+        "Vec4d",   "index",  "on-index", "index-mask", "on-index-mask", "point-index", "Vec3u8", "Vec3u16", "uint8"};
     if (grid_type < names.size()) return names[grid_type];
     return fmt::format("type {}", grid_type);
 }

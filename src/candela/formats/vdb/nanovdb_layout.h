@@ -44,7 +44,7 @@ constexpr uint64_t kMetaGridSize = 0, kMetaFileSize = 8, kMetaGridType = 32, kMe
 constexpr uint64_t kGridDataSize = 672;
 constexpr uint64_t kGridMagic = 0, kGridVersion = 16, kGridSize = 32, kGridName = 40, kGridNameSize = 256;
 constexpr uint64_t kGridMapMatD = 384, kGridMapVecD = 528;  // Map: 3x3 row-major matrix, translation (doubles)
-constexpr uint64_t kGridWorldBBox = 560;                     // min xyz, max xyz (doubles)
+constexpr uint64_t kGridWorldBBox = 560;                    // min xyz, max xyz (doubles)
 constexpr uint64_t kGridType = 636, kGridLastWord = 664;
 // TreeData, right after GridData
 constexpr uint64_t kTreeDataSize = 64;
@@ -58,12 +58,12 @@ constexpr uint64_t kTileKey = 0, kTileChild = 8, kTileState = 16, kTileValue = 2
 // Internal nodes (InternalData<float, L>): bbox, flags, value mask, child mask, stats, then the
 // slot table of 8-byte unions (a float value or an i64 child offset).
 struct InternalLayout {
-    int log2dim;           // 5 for upper, 4 for lower nodes
-    int child_log2;        // log2 of the voxels per side of a slot: 7 for upper, 3 for lower
-    uint64_t value_mask;   // offset of the value (active) mask
-    uint64_t child_mask;   // offset of the child mask
-    uint64_t table;        // offset of the slot table
-    uint64_t size;         // bytes per node
+    int log2dim;          // 5 for upper, 4 for lower nodes
+    int child_log2;       // log2 of the voxels per side of a slot: 7 for upper, 3 for lower
+    uint64_t value_mask;  // offset of the value (active) mask
+    uint64_t child_mask;  // offset of the child mask
+    uint64_t table;       // offset of the slot table
+    uint64_t size;        // bytes per node
 };
 constexpr InternalLayout kUpper{5, 7, 32, 32 + 4096, 8256, 270400};
 constexpr InternalLayout kLower{4, 3, 32, 32 + 512, 1088, 33856};

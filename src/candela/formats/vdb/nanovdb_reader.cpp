@@ -35,7 +35,8 @@ VolumeGrid read_nanovdb_grid(const std::filesystem::path& path, std::string_view
             break;
         }
     if (!entry) {
-        if (f.grids.empty()) fail(f.file, fmt::format("no grid named \"{}\": the NanoVDB file has no grids", grid_name));
+        if (f.grids.empty())
+            fail(f.file, fmt::format("no grid named \"{}\": the NanoVDB file has no grids", grid_name));
         fail(f.file, fmt::format("no grid named \"{}\"; the NanoVDB file has: {}", grid_name, quoted_names(f.grids)));
     }
     if (entry->codec != nanovdb_layout::kCodecNone)

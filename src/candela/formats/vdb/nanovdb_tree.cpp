@@ -53,8 +53,7 @@ class TreeWalker {
     }
 
     [[noreturn]] void fail(const std::string& what) const {
-        throw SceneError(SourceLocation{file_, 0, 0, {}},
-                         fmt::format("corrupt NanoVDB grid \"{}\": {}", name_, what));
+        throw SceneError(SourceLocation{file_, 0, 0, {}}, fmt::format("corrupt NanoVDB grid \"{}\": {}", name_, what));
     }
 
     float background() const { return b_.at<float>(root_ + L::kRootBackground); }
@@ -100,12 +99,15 @@ class TreeWalker {
     // The node of `level` that `parent` + `offset` points to; fails unless it is one, reached once.
     uint64_t child_node(int level, uint64_t parent, int64_t offset) {
         static constexpr uint64_t sizes[3] = {L::kLeafSize, L::kLower.size, L::kUpper.size};
-        const int64_t target = int64_t(parent) + std::clamp<int64_t>(offset, -int64_t(b_.size()) - 1, int64_t(b_.size()) + 1);
-        const bool in_array = target >= int64_t(start_[level]) && (uint64_t(target) - start_[level]) % sizes[level] == 0 &&
+        const int64_t target =
+            int64_t(parent) + std::clamp<int64_t>(offset, -int64_t(b_.size()) - 1, int64_t(b_.size()) + 1);
+        const bool in_array = target >= int64_t(start_[level]) &&
+                              (uint64_t(target) - start_[level]) % sizes[level] == 0 &&
                               (uint64_t(target) - start_[level]) / sizes[level] < count_[level];
         if (!in_array)
-            fail(fmt::format("a child offset of the node at byte {} points to byte {}, which is not one of its {} {} nodes",
-                             parent, target, count_[level], kLevelNames[level]));
+            fail(fmt::format(
+                "a child offset of the node at byte {} points to byte {}, which is not one of its {} {} nodes", parent,
+                target, count_[level], kLevelNames[level]));
         uint8_t& seen = seen_[level][(uint64_t(target) - start_[level]) / sizes[level]];
         if (seen) fail(fmt::format("the {} node at byte {} is the child of two slots", kLevelNames[level], target));
         seen = 1;
@@ -178,7 +180,8 @@ void read_map(const L::Bytes& b, VolumeGrid& grid, const TreeWalker& walker) {
     for (const auto& row : m)
         for (double v : row)
             if (!std::isfinite(v)) walker.fail("its index-to-world map is not finite");
-    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                       m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
                        m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
     if (!(std::abs(det) > 0) || !std::isfinite(det)) walker.fail("its index-to-world map is singular");
 }
@@ -197,7 +200,8 @@ void read_world_bounds(const L::Bytes& b, VolumeGrid& grid) {
     if (valid) return;
     const Vec3d lo(grid.index_min), hi = lo + Vec3d(double(grid.nx), double(grid.ny), double(grid.nz));
     for (int corner = 0; corner < 8; ++corner) {
-        const Vec3d p = grid.index_to_world_point({corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z});
+        const Vec3d p =
+            grid.index_to_world_point({corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z});
         for (int a = 0; a < 3; ++a) {
             grid.world_min[a] = corner == 0 ? p[a] : std::min(grid.world_min[a], p[a]);
             grid.world_max[a] = corner == 0 ? p[a] : std::max(grid.world_max[a], p[a]);
@@ -212,7 +216,8 @@ VolumeGrid decode_nanovdb_float_grid(std::string_view bytes, const std::string& 
     TreeWalker walker(bytes, file, name);
     const L::Bytes& b = walker.bytes();
     const uint64_t magic = b.at<uint64_t>(L::kGridMagic);
-    if (magic != L::kMagicGrid && magic != L::kMagicFileOld) walker.fail("it does not start with NanoVDB's grid magic number");
+    if (magic != L::kMagicGrid && magic != L::kMagicFileOld)
+        walker.fail("it does not start with NanoVDB's grid magic number");
     if (const uint32_t type = b.at<uint32_t>(L::kGridType); type != L::kGridTypeFloat)
         walker.fail(fmt::format("the file's table says float, but the grid's header says type {}", type));
 
@@ -224,11 +229,15 @@ VolumeGrid decode_nanovdb_float_grid(std::string_view bytes, const std::string& 
 
     // First walk: the active bounding box.
     ActiveBox box;
-    walker.walk([&](const Coord& origin, int64_t width, float, bool active) { if (active) box.add(origin, width); },
-                [&](const Coord& origin, uint64_t leaf) {
-                    for (uint32_t n = 0; n < 512; ++n)
-                        if (walker.leaf_active(leaf, n)) box.add({origin[0] + (n >> 6), origin[1] + ((n >> 3) & 7), origin[2] + (n & 7)}, 1);
-                });
+    walker.walk(
+        [&](const Coord& origin, int64_t width, float, bool active) {
+            if (active) box.add(origin, width);
+        },
+        [&](const Coord& origin, uint64_t leaf) {
+            for (uint32_t n = 0; n < 512; ++n)
+                if (walker.leaf_active(leaf, n))
+                    box.add({origin[0] + (n >> 6), origin[1] + ((n >> 3) & 7), origin[2] + (n & 7)}, 1);
+        });
     if (box.empty()) return grid;
 
     int64_t dims[3];
@@ -239,10 +248,11 @@ VolumeGrid decode_nanovdb_float_grid(std::string_view bytes, const std::string& 
                              fmt::format("NanoVDB grid \"{}\" is {} voxels wide along {}; candela reads grids up to {}",
                                          name, dims[a], "xyz"[a], INT_MAX));
     }
-    const uint64_t voxels = saturating_product(saturating_product(uint64_t(dims[0]), uint64_t(dims[1])), uint64_t(dims[2]));
-    if (auto refused = budget.charge(saturating_product(voxels, sizeof(float)),
-                                     fmt::format("volume grid \"{}\" ({}x{}x{} voxels)", name, dims[0], dims[1], dims[2]),
-                                     bytes.size()))
+    const uint64_t voxels =
+        saturating_product(saturating_product(uint64_t(dims[0]), uint64_t(dims[1])), uint64_t(dims[2]));
+    if (auto refused = budget.charge(
+            saturating_product(voxels, sizeof(float)),
+            fmt::format("volume grid \"{}\" ({}x{}x{} voxels)", name, dims[0], dims[1], dims[2]), bytes.size()))
         throw SceneError(SourceLocation{file, 0, 0, {}}, *refused);
     grid.index_min = Vec3<int>(int(box.lo[0]), int(box.lo[1]), int(box.lo[2]));
     grid.nx = int(dims[0]);
@@ -271,8 +281,8 @@ VolumeGrid decode_nanovdb_float_grid(std::string_view bytes, const std::string& 
         [&](const Coord& origin, uint64_t leaf) {
             for (uint32_t n = 0; n < 512; ++n) {
                 const Coord p = {origin[0] + (n >> 6), origin[1] + ((n >> 3) & 7), origin[2] + (n & 7)};
-                if (p[0] >= box.lo[0] && p[0] <= box.hi[0] && p[1] >= box.lo[1] && p[1] <= box.hi[1] && p[2] >= box.lo[2] &&
-                    p[2] <= box.hi[2])
+                if (p[0] >= box.lo[0] && p[0] <= box.hi[0] && p[1] >= box.lo[1] && p[1] <= box.hi[1] &&
+                    p[2] >= box.lo[2] && p[2] <= box.hi[2])
                     put(p[0], p[1], p[2], walker.leaf_value(leaf, n));
             }
         });

@@ -7,11 +7,11 @@
 
 #include <fmt/format.h>
 
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
 #include <climits>
 #include <cmath>
 #include <mutex>
-#include <openvdb/io/File.h>
-#include <openvdb/openvdb.h>
 
 #include "candela/core/error.h"
 #include "candela/scene/memory_budget.h"
@@ -83,7 +83,8 @@ void read_map(const openvdb::FloatGrid& grid, const std::string& file, VolumeGri
 void compute_world_bounds(VolumeGrid& g) {
     const Vec3d lo(g.index_min), hi = lo + Vec3d(double(g.nx), double(g.ny), double(g.nz));
     for (int corner = 0; corner < 8; ++corner) {
-        const Vec3d p = g.index_to_world_point({corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z});
+        const Vec3d p =
+            g.index_to_world_point({corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z});
         for (int a = 0; a < 3; ++a) {
             g.world_min[a] = corner == 0 ? p[a] : std::min(g.world_min[a], p[a]);
             g.world_max[a] = corner == 0 ? p[a] : std::max(g.world_max[a], p[a]);
@@ -100,12 +101,14 @@ VolumeGrid read_openvdb_grid(const std::filesystem::path& path, std::string_view
         if (!file.hasGrid(name)) {
             std::string names;
             for (const std::string& n : names_in(file)) names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", n);
-            if (names.empty()) fail(file_name, fmt::format("no grid named \"{}\": the OpenVDB file has no grids", name));
+            if (names.empty())
+                fail(file_name, fmt::format("no grid named \"{}\": the OpenVDB file has no grids", name));
             fail(file_name, fmt::format("no grid named \"{}\"; the OpenVDB file has: {}", name, names));
         }
         const openvdb::GridBase::Ptr meta = file.readGridMetadata(name);
         if (!meta->isType<openvdb::FloatGrid>())
-            fail(file_name, fmt::format("grid \"{}\" holds {} values; candela reads float grids only", name, meta->valueType()));
+            fail(file_name,
+                 fmt::format("grid \"{}\" holds {} values; candela reads float grids only", name, meta->valueType()));
         const std::string what = fmt::format("volume grid \"{}\"", name);
         // What the file's metadata says, checked before the tree is read.
         const auto bbox_min = meta->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MIN);
@@ -124,18 +127,20 @@ VolumeGrid read_openvdb_grid(const std::filesystem::path& path, std::string_view
         VolumeGrid out;
         out.name = name;
         out.background = grid->background();
-        if (!std::isfinite(out.background)) fail(file_name, fmt::format("grid \"{}\": the background is not finite", name));
+        if (!std::isfinite(out.background))
+            fail(file_name, fmt::format("grid \"{}\": the background is not finite", name));
         read_map(*grid, file_name, out);
         const openvdb::CoordBBox box = grid->evalActiveVoxelBoundingBox();
         if (box.empty()) return out;
         const openvdb::Coord dim = box.dim();
         for (int a = 0; a < 3; ++a)
             if (int64_t(box.max()[a]) - box.min()[a] + 1 > INT_MAX)
-                fail(file_name, fmt::format("grid \"{}\" is too wide along {}; candela reads grids up to {} voxels wide", name,
-                                            "xyz"[a], INT_MAX));
-        if (auto refused = budget.charge(dense_bytes(box),
-                                         fmt::format("{} ({}x{}x{} voxels)", what, dim.x(), dim.y(), dim.z()),
-                                         grid->memUsage()))
+                fail(file_name,
+                     fmt::format("grid \"{}\" is too wide along {}; candela reads grids up to {} voxels wide", name,
+                                 "xyz"[a], INT_MAX));
+        if (auto refused =
+                budget.charge(dense_bytes(box), fmt::format("{} ({}x{}x{} voxels)", what, dim.x(), dim.y(), dim.z()),
+                              grid->memUsage()))
             fail(file_name, *refused);
         out.index_min = Vec3<int>(box.min().x(), box.min().y(), box.min().z());
         out.nx = dim.x();
@@ -149,7 +154,8 @@ VolumeGrid read_openvdb_grid(const std::filesystem::path& path, std::string_view
                 for (int x = box.min().x(); x <= box.max().x(); ++x) {
                     const float v = accessor.getValue(openvdb::Coord(x, y, z));
                     if (!std::isfinite(v))
-                        fail(file_name, fmt::format("grid \"{}\": voxel ({}, {}, {}) is not a finite number", name, x, y, z));
+                        fail(file_name,
+                             fmt::format("grid \"{}\": voxel ({}, {}, {}) is not a finite number", name, x, y, z));
                     out.values[n++] = v;
                 }
         compute_world_bounds(out);

@@ -18,8 +18,8 @@
 namespace candela {
 
 struct VolumeGrid {
-    std::string name;          // the grid's name in the file ("density", "temperature")
-    Vec3<int> index_min{};     // index coordinates of values[0]
+    std::string name;            // the grid's name in the file ("density", "temperature")
+    Vec3<int> index_min{};       // index coordinates of values[0]
     int nx = 0, ny = 0, nz = 0;  // the block's size in voxels; all 0 for a grid with no active voxel
     // nx*ny*nz values, x fastest: voxel index_min + (x,y,z) is values[(z*ny + y)*nx + x]. The block
     // is the bounding box of the active voxels (and active tiles); each voxel in it holds what the
