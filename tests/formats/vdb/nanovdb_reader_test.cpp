@@ -63,6 +63,20 @@ TEST(NanoVdbReader, ReadsValuesBoundingBoxAndMapOfADensityGrid) {
     expect_density_8x6x5(read(nvdb_fixture("density_8x6x5.nvdb")));
 }
 
+// pbrt-v4 pins NanoVDB 32.3, whose files start with "NanoVDB0"; the layout is the same.
+TEST(NanoVdbReader, ReadsAFileOfNanoVdb32_3AsPbrtV4WritesThem) {
+    const VolumeGrid g = read(nvdb_fixture("density_8x6x5_v32_3.nvdb"));
+    EXPECT_EQ(g.index_min, Vec3<int>(-3, 2, -1));
+    EXPECT_EQ(g.voxel_count(), 240u);
+    for (int k = -1; k < 4; ++k)
+        for (int j = 2; j < 8; ++j)
+            for (int i = -3; i < 5; ++i) ASSERT_EQ(g.value_at(i, j, k), pattern(i, j, k)) << i << " " << j << " " << k;
+    EXPECT_EQ(g.index_to_world_point({0, 0, 0}), Vec3d(1, -2, 3));
+    EXPECT_EQ(g.index_to_world_point({2, 2, 2}), Vec3d(2, -1, 4));
+    EXPECT_EQ(g.world_min, Vec3d(-0.5, -1, 2.5));
+    EXPECT_EQ(g.world_max, Vec3d(3.5, 2, 5));
+}
+
 TEST(NanoVdbReader, ReadsARawGridBufferAsASegmentFile) {
     expect_density_8x6x5(read(nvdb_fixture("density_8x6x5_raw.nvdb")));
 }
