@@ -198,6 +198,7 @@ TEST(NanoVdbReader, RefusesAGridTooLargeForTheBudgetBeforeAllocatingIt) {
     EXPECT_EQ(fits.used(), 240u * sizeof(float));
 }
 
+// A file of the test's own (each test its own name: ctest runs them in parallel).
 std::filesystem::path with_bytes(const std::string& name, const std::string& bytes) {
     const std::filesystem::path file = std::filesystem::path(CANDELA_TEST_BINARY_DIR) / "vdb_fixtures" / name;
     std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;

@@ -33,7 +33,10 @@ VolumeGrid read(const std::filesystem::path& file, const std::string& name = "de
 
 std::filesystem::path write_vdb(const std::string& name, openvdb::GridPtrVec grids) {
     openvdb::initialize();
-    static const std::filesystem::path dir = test::fresh_dir("openvdb_reader_test");
+    // A folder per test: ctest runs the tests of one binary in parallel processes.
+    const std::filesystem::path dir = std::filesystem::path(CANDELA_TEST_BINARY_DIR) / "openvdb_reader_test" /
+                                      ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::filesystem::create_directories(dir);
     const std::filesystem::path file = dir / name;
     openvdb::io::File out(file.string());
     out.write(grids);
