@@ -49,6 +49,24 @@ std::vector<std::string> names_in(openvdb::io::File& file) {
     return names;
 }
 
+// OpenVDB's message, fit for one line: a corrupt file can put the bytes of a string it never
+// read into it (NULs, long runs of garbage). Printable ASCII kept, the rest as '?', runs of
+// blanks as one, at most 200 characters.
+std::string printable(std::string_view message) {
+    std::string out;
+    for (char c : message) {
+        const char p = c >= 0x20 && c < 0x7f ? c : (c == '\0' || c == '\n' || c == '\t' ? ' ' : '?');
+        if (p == ' ' && (out.empty() || out.back() == ' ')) continue;
+        if (out.size() == 200) {
+            out += "...";
+            break;
+        }
+        out += p;
+    }
+    while (!out.empty() && out.back() == ' ') out.pop_back();
+    return out;
+}
+
 // Runs `body` on the opened file, turning OpenVDB's exceptions into SceneErrors.
 template <class Body>
 auto with_file(const std::filesystem::path& path, Body&& body) {
@@ -63,7 +81,7 @@ auto with_file(const std::filesystem::path& path, Body&& body) {
     } catch (const SceneError&) {
         throw;
     } catch (const std::exception& e) {
-        fail(name, fmt::format("cannot read OpenVDB file: {}", e.what()));
+        fail(name, fmt::format("cannot read OpenVDB file: {}", printable(e.what())));
     }
 }
 
