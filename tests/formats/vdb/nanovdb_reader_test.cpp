@@ -289,6 +289,21 @@ TEST(NanoVdbReader, RefusesANonFiniteValue) {
     EXPECT_NE(e.find("voxel (1, 0, 0) is not a finite number"), std::string::npos) << e;
 }
 
+TEST(NanoVdbReader, ReadsAGridWithoutActiveVoxelsAsAnEmptyBlock) {
+    const std::string bytes = test::read_bytes(nvdb_fixture("scaled_translated.nvdb"));
+    int64_t leaf_offset;
+    std::memcpy(&leaf_offset, bytes.data() + kGrid + 672, 8);
+    const std::string no_mask(64, '\0');  // the one leaf's value mask, all off
+    const VolumeGrid g =
+        read(with_bytes("no_active.nvdb", patched(bytes, kGrid + 672 + size_t(leaf_offset) + 16, no_mask.data(), 64)));
+    EXPECT_EQ(g.nx, 0);
+    EXPECT_EQ(g.ny, 0);
+    EXPECT_EQ(g.nz, 0);
+    EXPECT_TRUE(g.values.empty());
+    EXPECT_EQ(g.value_at(0, 0, 0), 0.0f);
+    EXPECT_EQ(g.index_to_world[0][0], 0.5);
+}
+
 TEST(NanoVdbReader, RefusesAnOpenVdbFileNamedNvdb) {
     // An OpenVDB file starts with the magic number 0x56444220 (" BDV").
     const std::string bytes = std::string("\x20\x42\x44\x56\0\0\0\0", 8) + std::string(64, '\0');
