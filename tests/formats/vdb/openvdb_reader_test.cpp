@@ -6,12 +6,15 @@
 #include <openvdb/io/File.h>
 #include <openvdb/math/Transform.h>
 #include <openvdb/openvdb.h>
+#include <fmt/format.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "candela/core/error.h"
+#include "candela/formats/json/scene_loader.h"
 #include "candela/formats/vdb/nanovdb_reader.h"
 #include "candela/formats/vdb/openvdb_reader.h"
 #include "candela/scene/memory_budget.h"
@@ -186,6 +189,54 @@ TEST(OpenVdbReader, RefusesAGridTooLargeForTheBudgetBeforeAllocatingIt) {
     EXPECT_NE(e.find("volume grid \"density\""), std::string::npos) << e;
     EXPECT_NE(e.find("needs about"), std::string::npos) << e;
     EXPECT_EQ(tiny.used(), 0u);
+}
+
+}  // namespace
+}  // namespace candela
+
+namespace candela {
+namespace {
+
+// The grid at world point p of the medium "m" of `scene_json`: its density times sigma_s (1).
+float density_at(const std::string& medium_json, const Vec3f& p) {
+    const Scene s = load_scene_from_string(R"({"media": {"m": )" + medium_json + "}}",
+                                           std::filesystem::path(CANDELA_TEST_DATA_DIR) / "scenes" / "inline.json");
+    return visit([&](const auto& m) { return m.at(p, MediumChannels{}).sigma_s[0]; }, s.media.at(0));
+}
+
+// The `nanovdb` and `openvdb` media of a scene file hold the file's voxel values at their world
+// positions (NanoVDB's and OpenVDB's trilinear samplers put voxel (i, j, k) at index point
+// (i, j, k)), under the file's map and then the medium's transform; the same grid from either
+// file gives the same medium.
+TEST(VdbMedia, HoldTheFilesVoxelsAtTheirWorldPositions) {
+    const std::string nvdb = test::nvdb_fixture("density_8x6x5_v32_3.nvdb").string();
+    const std::string vdb = write_vdb("density.vdb", {density_grid()}).string();
+    for (const auto& [type, file] : {std::pair{"nanovdb", nvdb}, std::pair{"openvdb", vdb}}) {
+        SCOPED_TRACE(type);
+        const std::string medium = fmt::format(R"({{"type": "{}", "file": "{}", "sigma_a": 0, "sigma_s": 1)", type, file);
+        // Voxel (2, 3, 0): 1 + 5 + 8 + 48 = 62, at 0.5 (2, 3, 0) + (1, -2, 3).
+        EXPECT_NEAR(density_at(medium + "}", Vec3f(2.0f, -0.5f, 3.0f)), 62.0f, 1e-4f);
+        // Halfway to voxel (3, 3, 0), 63: the average.
+        EXPECT_NEAR(density_at(medium + "}", Vec3f(2.25f, -0.5f, 3.0f)), 62.5f, 1e-4f);
+        // Moved by the medium's transform.
+        EXPECT_NEAR(density_at(medium + R"(, "transform": [{"translate": [10, 0, 0]}]})", Vec3f(12.0f, -0.5f, 3.0f)), 62.0f,
+                    1e-4f);
+        // Outside the grid: nothing.
+        EXPECT_EQ(density_at(medium + "}", Vec3f(50.0f, 0.0f, 0.0f)), 0.0f);
+    }
+}
+
+TEST(VdbMedia, BadFilesAndGridNamesAreLocatedAtTheFileKey) {
+    const std::string scene = R"({"media": {"m": {"type": "nanovdb", "file": )";
+    auto load = [](const std::string& json) {
+        load_scene_from_string(json, std::filesystem::path(CANDELA_TEST_DATA_DIR) / "scenes" / "inline.json");
+    };
+    EXPECT_NE(error_of([&] { load(scene + R"("missing.nvdb"}}})"); }).find("/media/m/file: NanoVDB file \"missing.nvdb\" not found"),
+              std::string::npos);
+    const std::string file = test::nvdb_fixture("density_8x6x5_v32_3.nvdb").string();
+    const std::string wrong = error_of([&] { load(scene + "\"" + file + R"(", "grid_name": "smoke"}}})"); });
+    EXPECT_NE(wrong.find("smoke"), std::string::npos) << wrong;
+    EXPECT_NE(wrong.find("referenced by /media/m/file"), std::string::npos) << wrong;
 }
 
 }  // namespace
