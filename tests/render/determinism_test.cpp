@@ -69,6 +69,26 @@ TEST(DeterminismSpectral, SameImageForAnyThreadCountAndTileSize) {
     }
 }
 
+// Volpath in a scene with media, in both modes: its medium walks draw from generators seeded by
+// the sampler's numbers, so the image is still a function of the scene, spp and seed.
+TEST(DeterminismMedia, SameImageForAnyThreadCountAndTileSize) {
+    for (bool spectral : {false, true}) {
+        SCOPED_TRACE(spectral ? "spectral" : "rgb");
+        Scene scene = test::media_small_box_scene(37, 23, 8);
+        scene.integrator.spectral = spectral;
+        Image one = render(scene, {.threads = 1, .tile_size = 16}).image;
+        Image two = render(scene, {.threads = 2, .tile_size = 16}).image;
+        Image small_tiles = render(scene, {.threads = 2, .tile_size = 5}).image;
+        float brightest = 0.0f;
+        for (const Rgb& p : one.pixels) brightest = std::max(brightest, p.max_component());
+        EXPECT_GT(brightest, 0.0f);
+        EXPECT_TRUE(bit_identical(one, two));
+        EXPECT_TRUE(bit_identical(one, small_tiles));
+        scene.sampler.seed += 1;
+        EXPECT_FALSE(bit_identical(one, render(scene, {.threads = 2, .tile_size = 16}).image));
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllDebugIntegrators, Determinism,
                          ::testing::Values(std::pair{IntegratorType::kAo, FilterType::kBox},
                                            std::pair{IntegratorType::kNormals, FilterType::kTent},

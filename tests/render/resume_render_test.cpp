@@ -51,7 +51,8 @@ RenderOptions stop_after_passes(int k, uint32_t pass_spp, int threads, int& pass
 Scene lit_scene(IntegratorType integrator, SamplerType sampler, int spp, bool spectral = false) {
     // Not a multiple of the tile size; a light, a mirror and indirect light, so every branch of
     // the transport integrators runs.
-    Scene s = test::lit_small_box_scene(37, 23, spp);
+    Scene s = integrator == IntegratorType::kVolPath ? test::media_small_box_scene(37, 23, spp)
+                                                      : test::lit_small_box_scene(37, 23, spp);
     s.integrator.type = integrator;
     s.integrator.spectral = spectral;
     s.sampler.type = sampler;
@@ -119,7 +120,7 @@ TEST_P(Resume, ThroughACheckpointFileIsBitIdentical) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TransportIntegrators, Resume,
-                         ::testing::Combine(::testing::Values(IntegratorType::kPath, IntegratorType::kBsdf),
+                         ::testing::Combine(::testing::Values(IntegratorType::kPath, IntegratorType::kBsdf, IntegratorType::kVolPath),
                                             ::testing::Values(SamplerType::kIndependent, SamplerType::kSobol),
                                             ::testing::Bool()),
                          param_name);

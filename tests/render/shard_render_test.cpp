@@ -43,8 +43,8 @@ bool same_bits(const Film& a, const Film& b) {
 }
 
 // Sides not multiples of the 16-pixel tile: 3 x 2 tiles, the right and bottom ones partial.
-Scene scene(bool weighted_filter, SamplerType sampler) {
-    Scene s = test::lit_small_box_scene(37, 23, 4);
+Scene scene(bool weighted_filter, SamplerType sampler, bool media = false) {
+    Scene s = media ? test::media_small_box_scene(37, 23, 4) : test::lit_small_box_scene(37, 23, 4);
     s.sampler.type = sampler;
     if (weighted_filter) {
         FilterSettings mitchell;
@@ -59,9 +59,16 @@ constexpr uint64_t kContentHash = 0x5eed;  // any: the parts of one test share i
 
 TEST(ShardRender, MergedPartsAreTheWholeRenderBitForBit) {
     const fs::path dir = temp_dir("merged");
-    for (bool weighted : {false, true})
-        for (SamplerType sampler : {SamplerType::kIndependent, SamplerType::kSobol}) {
-            const Scene s = scene(weighted, sampler);
+    struct Case {
+        bool weighted;
+        SamplerType sampler;
+        bool media;
+    };
+    for (Case c : {Case{false, SamplerType::kIndependent, false}, Case{false, SamplerType::kSobol, false},
+                   Case{true, SamplerType::kIndependent, false}, Case{true, SamplerType::kSobol, false},
+                   Case{false, SamplerType::kSobol, true}}) {
+            const bool weighted = c.weighted;
+            const Scene s = scene(weighted, c.sampler, c.media);
             const RenderResult whole = render(s, {.threads = 2});
             ASSERT_EQ(whole.state.film.weighted(), weighted);
             for (int n : {1, 2, 5}) {

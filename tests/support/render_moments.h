@@ -166,7 +166,7 @@ inline RenderMoments render_moments_replicated(const Scene& scene, int replicate
 // the whole render label, split over at most kRenderStatTests such TESTs (Bonferroni), so that a
 // correct renderer fails the label by chance at most once in a hundred reseedings. Raise the bound
 // when adding statistical render tests.
-inline constexpr int kRenderStatTests = 80;
+inline constexpr int kRenderStatTests = 100;
 inline constexpr double kRenderTestAlpha = 0.01 / kRenderStatTests;
 
 // The two-sided critical |z| of one test at level `alpha_per_test` for a standard normal

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "candela/geometry/triangle_mesh.h"
+#include "candela/media/medium_spectrum.h"
 #include "candela/scene/scene.h"
 
 namespace candela::test {
@@ -136,6 +137,35 @@ inline Scene lit_small_box_scene(int width, int height, int spp) {
     add_sphere(s, {-0.5, -0.7, -0.4}, 0.3, 2);
     uint32_t light = add_quad(s, {-0.4f, 0.9f, -0.4f}, {0.8f, 0, 0}, {0, 0, 0.8f}, 3);  // faces -y
     set_emission(s, light, Rgb(6.0f, 5.0f, 4.0f));
+    return s;
+}
+
+// lit_small_box_scene filled with fog (the camera in it), with a sphere of chromatic, emitting
+// smoke behind an interface, rendered by volpath: every branch of its loop runs (null collisions,
+// scattering, absorption, emission, interfaces, shadow rays through media).
+inline Scene media_small_box_scene(int width, int height, int spp) {
+    Scene s = lit_small_box_scene(width, height, spp);
+    HomogeneousMedium fog;
+    fog.sigma_a = medium_coefficient(Rgb(0.05f));
+    fog.sigma_s = medium_coefficient(Rgb(0.4f));
+    fog.g = 0.3f;
+    HomogeneousMedium smoke;
+    smoke.sigma_a = medium_coefficient(Rgb(0.5f, 1.0f, 2.0f));
+    smoke.sigma_s = medium_coefficient(Rgb(3.0f, 2.0f, 1.0f));
+    smoke.Le = medium_emission(Rgb(0.5f, 0.2f, 0.1f));
+    smoke.emissive = true;
+    smoke.g = -0.2f;
+    s.media = {fog, smoke};
+    s.medium_names = {"fog", "smoke"};
+    s.camera_medium = 0;
+    Material boundary = make_material(TransmissionParams{1.0f, ColorParam{Rgb(1.0f)}});
+    boundary.interface = true;
+    s.materials.push_back(boundary);
+    s.material_names.push_back("boundary");
+    const uint32_t sphere = add_sphere(s, {0.4, -0.5, 0.2}, 0.45, uint32_t(s.materials.size() - 1));
+    s.shapes[sphere].interior = 1;
+    s.shapes[sphere].exterior = 0;
+    s.integrator.type = IntegratorType::kVolPath;
     return s;
 }
 

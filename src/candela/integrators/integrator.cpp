@@ -6,6 +6,7 @@
 #include "candela/lights/light_set.h"
 #include "candela/integrators/debug_integrators.h"
 #include "candela/integrators/transport_integrators.h"
+#include "candela/integrators/volpath_integrator.h"
 #include "candela/scene/scene.h"
 
 namespace candela {
@@ -31,6 +32,13 @@ std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Accelerato
                 throw RenderError("the bsdf integrator cannot see point, spot or directional lights");
             return std::make_unique<BsdfIntegrator>(scene, accel, lights);
         case IntegratorType::kWhitted: return std::make_unique<WhittedIntegrator>(scene, accel, lights);
+        case IntegratorType::kVolPath:
+            // Without media or interfaces volpath's estimate is path's: path renders it, with
+            // path's bits and speed (pbrt-v4's volpath differs only in its MIS heuristic there).
+            if (scene.media.empty() && std::none_of(scene.materials.begin(), scene.materials.end(),
+                                                    [](const Material& m) { return m.interface; }))
+                return std::make_unique<PathIntegrator>(scene, accel, lights);
+            return std::make_unique<VolPathIntegrator>(scene, accel, lights);
         case IntegratorType::kNormals: return std::make_unique<NormalsIntegrator>(accel);
         case IntegratorType::kDepth: return std::make_unique<DepthIntegrator>(accel, scene.camera.near);
         case IntegratorType::kAlbedo: return std::make_unique<AlbedoIntegrator>(scene, accel);

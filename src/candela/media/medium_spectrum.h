@@ -33,6 +33,11 @@ struct MediumSpectrum {
     bool is_black() const { return rgb.r == 0.0f && rgb.g == 0.0f && rgb.b == 0.0f && spectrum.max_value() == 0.0f; }
 };
 
+// An RGB coefficient and its spectrum, pbrt-v4's RGBUnboundedSpectrum (any value >= 0).
+MediumSpectrum medium_coefficient(const Rgb& rgb);
+// An RGB emission and its spectrum, pbrt-v4's RGBIlluminantSpectrum (the colour times D65).
+MediumSpectrum medium_emission(const Rgb& rgb);
+
 // Multiplies both forms by s.
 inline MediumSpectrum scaled(MediumSpectrum m, float s) {
     m.rgb = m.rgb * s;

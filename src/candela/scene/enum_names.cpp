@@ -10,8 +10,8 @@ namespace {
 
 // Each table lists the names in the enum's declaration order, so a value's name is
 // table[underlying value]. Adding an enumerator means adding its name here.
-constexpr std::array<std::string_view, 7> kIntegratorTypeNames = {"path",    "bsdf",  "whitted", "normals",
-                                                                  "depth",   "albedo", "ao"};
+constexpr std::array<std::string_view, 8> kIntegratorTypeNames = {"path",  "bsdf",   "whitted", "normals",
+                                                                  "depth", "albedo", "ao",      "volpath"};
 constexpr std::array<std::string_view, 2> kLightSelectionNames = {"power", "uniform"};
 constexpr std::array<std::string_view, 2> kSamplerTypeNames = {"independent", "sobol"};
 constexpr std::array<std::string_view, 4> kFilterTypeNames = {"box", "tent", "gaussian", "smallpt"};

@@ -12,7 +12,8 @@ namespace candela {
 // path: next-event estimation + BSDF sampling with MIS (the default). bsdf: BSDF sampling only
 // (smallpt's estimator). whitted: direct light + perfect specular recursion. The rest are debug
 // views of the first hit.
-enum class IntegratorType { kPath, kBsdf, kWhitted, kNormals, kDepth, kAlbedo, kAo };
+// Appended only: checkpoints record the value.
+enum class IntegratorType { kPath, kBsdf, kWhitted, kNormals, kDepth, kAlbedo, kAo, kVolPath };
 
 struct IntegratorSettings {
     IntegratorType type = IntegratorType::kPath;

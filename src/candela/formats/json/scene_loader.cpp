@@ -22,8 +22,8 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 9> kSections = {"integrator", "sampler", "camera",  "film",  "textures",
-                                                       "materials",  "objects", "shapes", "lights"};
+constexpr std::array<std::string_view, 10> kSections = {"integrator", "sampler", "media",   "camera", "film",
+                                                        "textures",   "materials", "objects", "shapes", "lights"};
 // In the order of CameraType and FovAxis (camera_settings.h).
 constexpr std::array<std::string_view, 2> kCameraTypes = {"perspective", "orthographic"};
 constexpr std::array<std::string_view, 5> kFovAxes = {"x", "y", "diagonal", "smaller", "larger"};
@@ -212,6 +212,7 @@ CameraBasis read_camera_basis(const JsonCursor& v) {
 }
 
 void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget* budget) {
+    c.has("medium");  // the medium it sits in: read by load_scene once the media are
     if (auto type = c.get("type"))
         camera.type = enum_of<CameraType>(type->choice("camera type", kCameraTypes), kCameraTypes);
     if (auto transform = c.get("transform")) {
@@ -311,15 +312,35 @@ std::string read_text_file(const std::filesystem::path& file) {
 // pbrt-v4 warns the same way: a black image after hours of rendering is a poor way to find out.
 void warn_if_unlit(Scene& scene) {
     const IntegratorType t = scene.integrator.type;
-    if (t != IntegratorType::kPath && t != IntegratorType::kBsdf && t != IntegratorType::kWhitted) return;
+    if (t != IntegratorType::kPath && t != IntegratorType::kBsdf && t != IntegratorType::kWhitted && t != IntegratorType::kVolPath) return;
     if (scene.environment || !scene.delta_lights.empty()) return;
     for (const Shape& shape : scene.shapes)
         if (!shape.emission.is_black()) return;
+    // An emitting medium lights the scene for volpath (pbrt-v4 counts it as a light too).
+    if (t == IntegratorType::kVolPath)
+        for (const Medium& m : scene.media)
+            if (medium_emissive(m)) return;
     scene.warnings.push_back(
         SceneError(SourceLocation{scene.file.string(), 0, 0, ""},
                    fmt::format("the scene has no lights (no shape has an emission and there is no "
                                "environment, point, spot or directional light); the {} integrator "
                                "will render a black image",
+                               integrator_type_name(t)))
+            .formatted());
+}
+
+// pbrt-v4 warns the same way (cpu/render.cpp): only volpath scatters in media; the others render
+// the scene as if the media were vacuum.
+void warn_if_media_ignored(Scene& scene) {
+    const IntegratorType t = scene.integrator.type;
+    if (t == IntegratorType::kVolPath) return;
+    bool in_media = scene.camera_medium != kNoMedium;
+    for (const Shape& shape : scene.shapes) in_media |= shape.interior != kNoMedium || shape.exterior != kNoMedium;
+    if (!in_media) return;
+    scene.warnings.push_back(
+        SceneError(SourceLocation{scene.file.string(), 0, 0, ""},
+                   fmt::format("the scene has participating media but the {} integrator ignores them (it renders "
+                               "them as vacuum); use \"volpath\"",
                                integrator_type_name(t)))
             .formatted());
 }
@@ -378,6 +399,11 @@ Scene load_scene_from_string(std::string_view json, const std::filesystem::path&
                                          "the adaptive sampler's per-pixel statistics"))
             root.get("sampler")->get("adaptive")->fail(*refused);
     if (auto c = root.get("film")) read_film(*c, scene.film, scene.camera, scene.output_file);
+    // The media, after the film (charged first), before the camera's medium and the shapes, which
+    // name them.
+    if (auto c = root.get("media")) read_media(*c, scene, budget);
+    if (camera)
+        if (auto v = camera->get("medium")) scene.camera_medium = medium_index(*v, scene);
     if (auto c = root.get("textures")) read_textures(*c, scene);
     if (auto c = root.get("materials")) read_materials(*c, scene);
     std::vector<ObjectBounds> objects;
@@ -386,6 +412,7 @@ Scene load_scene_from_string(std::string_view json, const std::filesystem::path&
     if (auto c = root.get("lights")) read_lights(*c, folder, scene, budget);
     load_texture_images(scene, document, budget);
     warn_if_unlit(scene);
+    warn_if_media_ignored(scene);
     return scene;
 }
 

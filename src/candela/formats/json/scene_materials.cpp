@@ -17,9 +17,9 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 10> kMaterialTypes = {
-    "blend", "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "mirror", "mix",
-    "thin_dielectric", "transmission"};
+constexpr std::array<std::string_view, 11> kMaterialTypes = {
+    "blend", "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "interface", "mirror",
+    "mix", "thin_dielectric", "transmission"};
 // The types a `mix` may combine: every material type but `mix` itself.
 constexpr std::array<std::string_view, 8> kLobeMaterialTypes = {
     "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "mirror",
@@ -317,8 +317,20 @@ SurfaceParams read_surface(JsonCursor& c, Scene& scene) {
     return s;
 }
 
+// pbrt-v4's `interface`: no surface, only a boundary between the media of the shapes that use it
+// (material.h). It takes no other key: no alpha, no maps.
+Material interface_material() {
+    Material m = make_material(TransmissionParams{1.0f, ColorParam{Rgb(1.0f)}});
+    m.interface = true;
+    return m;
+}
+
 Material read_material(JsonCursor c, Scene& scene, std::vector<PendingBlend>& pending) {
     std::string_view type = c.require("type").choice("material type", kMaterialTypes);
+    if (type == "interface") {
+        c.reject_unknown_keys();
+        return interface_material();
+    }
     Material material = type == "mix"     ? read_mix(c, scene)
                         : type == "blend" ? read_blend(c, scene, pending)
                                           : make_material(read_lobe(c, type, scene));

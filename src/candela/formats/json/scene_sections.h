@@ -45,6 +45,22 @@ void read_textures(JsonCursor textures, Scene& scene);
 // first names the file.
 void load_texture_images(Scene& scene, const JsonDocument& document, MemoryBudget& budget);
 
+// `media`: name -> participating medium (media/medium.h), in file order; grids are charged to
+// `budget` before they are allocated.
+void read_media(JsonCursor media, Scene& scene, MemoryBudget& budget);
+// The medium a camera or shape names: its index, or kNoMedium for "" (pbrt-v4's "no medium").
+uint32_t medium_index(const JsonCursor& c, const Scene& scene);
+// What every medium type reads alike (scene_media.cpp): a coefficient (a number, [r, g, b] or a
+// spectrum, >= 0; an RGB value's spectrum is pbrt-v4's RGBUnboundedSpectrum), `scale` (default
+// 1), `g` (default 0), and the emission `Le` times a number `Le_scale` (nullopt without `Le` or
+// when black; a spectrum normalized to luminance 1, an RGB value's illuminant uplift, as area
+// lights' emission). A grid's `Le_scale` array is the grid reader's to read. An RGB value's
+// spectra: medium_coefficient and medium_emission (media/medium_spectrum.h).
+MediumSpectrum read_medium_coefficient(const JsonCursor& c, const Scene& scene);
+float read_medium_scale(JsonCursor& medium);
+float read_medium_g(JsonCursor& medium);
+std::optional<MediumSpectrum> read_medium_emission(JsonCursor& medium, const Scene& scene);
+
 // `materials`: name -> material, in file order.
 void read_materials(JsonCursor materials, Scene& scene);
 

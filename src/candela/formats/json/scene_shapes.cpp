@@ -153,6 +153,9 @@ void read_shape(JsonCursor c, const ShapeSection& section, Scene& scene, MemoryB
     }
     Shape shape;
     shape.material = material_index(c.require("material"), scene);
+    // The media on its two sides (pbrt-v4's MediumInterface); none by default.
+    if (auto v = c.get("interior")) shape.interior = medium_index(*v, scene);
+    if (auto v = c.get("exterior")) shape.exterior = medium_index(*v, scene);
     std::optional<JsonCursor> emission_scale = c.get("emission_scale");
     if (section.object) {
         // A light must be sampled where it is, once per placement; pbrt-v4 refuses area lights in
