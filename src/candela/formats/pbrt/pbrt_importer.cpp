@@ -338,7 +338,6 @@ class Importer final : public Target {
         // pbrt-v4 looks the media up once the file is read: they may be defined after the shape.
         for (const std::string* m : {&state_.inside_medium, &state_.outside_medium})
             if (!m->empty()) medium_uses_.emplace_back(*m, at);
-        if (!state_.inside_medium.empty() || !state_.outside_medium.empty()) shapes_have_media_ = true;
         if (object_) {
             GraphicsState s = state_;
             if (s.area_light) {
@@ -434,16 +433,10 @@ class Importer final : public Target {
         state_.material = default_material_;
     }
     // pbrt-v4's default integrator is volpath, which candela's path equals where there are no
-    // media: volpath where the scene has media. pbrt-v4's path ignores media and warns.
+    // media: volpath where the scene has media. (pbrt-v4's path ignores media and warns; the
+    // loader gives that warning, for any integrator but volpath.)
     void finish_integrator() {
-        Json& integrator = ctx_.doc()["integrator"];
-        const bool has_media = !ctx_.doc()["media"].empty();
-        if (integrator_follows_media_ && has_media) integrator["type"] = "volpath";
-        if (shapes_have_media_ && integrator.value("type", "") != "volpath") {
-            // (Only an Integrator directive gets here: the default follows the media.)
-            ctx_.warn(options_.integrator->location(), "the scene has media but its integrator does not render them (pbrt-v4's path ignores "
-                          "media): use \"volpath\"");
-        }
+        if (integrator_follows_media_ && !ctx_.doc()["media"].empty()) ctx_.doc()["integrator"]["type"] = "volpath";
     }
     ImportContext ctx_;
     GraphicsState state_;
@@ -453,7 +446,6 @@ class Importer final : public Target {
     bool in_world_ = false;
     bool options_translated_ = false;
     bool integrator_follows_media_ = false;
-    bool shapes_have_media_ = false;
     std::vector<std::pair<std::string, Location>> medium_uses_;  // media shapes name, and where
     bool ignore_transforms_ = false;
     std::string default_material_;

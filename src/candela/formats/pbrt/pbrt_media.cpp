@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "candela/formats/pbrt/pbrt_import_context.h"
+#include "candela/media/scattering_presets.h"
 
 namespace candela::pbrt {
 namespace {
@@ -87,11 +88,17 @@ std::vector<double> rgb_grid(const Params& p, const char* name) {
     return g->numbers;
 }
 
-Json homogeneous(const Params& p) {
+Json homogeneous(const Params& p, ImportContext& ctx) {
     Json m{{"type", "homogeneous"}};
     // pbrt-v4 reads sigma_a and sigma_s only where the preset is not found (it warns then); with a
     // preset it knows, they are unused parameters (an error in pbrt-v4, a warning here).
-    if (auto preset = p.get_string("preset"); preset && !preset->empty()) {
+    const std::optional<std::string> preset = p.get_string("preset");
+    const bool known = preset && find_scattering_preset(*preset);
+    if (preset && !preset->empty() && !known)
+        ctx.warn(p.find("preset")->location,
+                 fmt::format("{}: preset \"{}\" not found (as pbrt-v4 warns); sigma_a and sigma_s are used",
+                             p.directive(), *preset));
+    if (known) {
         m["preset"] = *preset;
     } else {
         copy_colour(p, "sigma_a", "sigma_a", m);
@@ -189,7 +196,7 @@ void translate_medium(const std::string& name, const Params& p, const Transform&
     if (type.empty()) p.fail(nullptr, fmt::format("MakeNamedMedium \"{}\": \"string type\" is required", name));
     Json m;
     if (type == "homogeneous") {
-        m = homogeneous(p);
+        m = homogeneous(p, ctx);
     } else if (type == "uniformgrid") {
         m = uniform_grid(p);
     } else if (type == "rgbgrid") {
