@@ -34,7 +34,7 @@ namespace fs = std::filesystem;
 // The kinds of malformed input issue 6 lists; each must have an entry.
 enum Kind {
     kJsonSyntax, kEncoding, kDeepNesting, kStructure, kUnknownName, kNumber, kCamera, kLight,
-    kDegenerate, kFileAccess, kObj, kPly, kImage, kPbrt, kKindCount
+    kDegenerate, kFileAccess, kObj, kPly, kImage, kPbrt, kMedium, kKindCount
 };
 enum Outcome { kError, kWarning };
 
@@ -58,6 +58,13 @@ void PrintTo(const BadInput& bad, std::ostream* os) { *os << bad.scene; }
 // object's opening brace; a JSON syntax error where the parser stopped. In a mesh or image file:
 // the line (OBJ, ASCII PLY, PLY headers), or the element, record and byte offset (binary PLY).
 const BadInput kBadInputs[] = {
+    // --- participating media (issue 24)
+    {"medium_negative_sigma.json", kMedium, kError, "", 2, 55, "/media/fog/sigma_a", "expected a number >= 0, got -0.1"},
+    {"medium_unknown_name.json", kMedium, kError, "", 3, 24, "/camera/medium",
+     "unknown medium \"smoke\"; defined media: fog"},
+    {"medium_unknown_type.json", kMedium, kError, "", 2, 29, "/media/fog/type",
+     "unknown medium type \"vdb\"; expected one of: homogeneous"},
+    {"medium_sigma_overflows.json", kMedium, kError, "", 2, 55, "/media/fog/sigma_s", "1e+39"},
     // --- JSON syntax (7)
     {"comment.json", kJsonSyntax, kError, "", 2, 27, "",
      "(JSON allows no comments)"},
@@ -152,7 +159,7 @@ const BadInput kBadInputs[] = {
     {"near_miss_top_level_key.json", kUnknownName, kError, "", 2, 3, "",
      "unknown key \"materails\" (did you mean \"materials\"?)"},
     {"sphere_with_transform.json", kUnknownName, kError, "", 5, 6, "/shapes/0",
-     "unknown key \"transform\"; expected one of: center, emission, emission_scale, material, radius, reverse_orientation, two_sided, type"},
+     "unknown key \"transform\"; expected one of: center, emission, emission_scale, exterior, interior, material, radius, reverse_orientation, two_sided, type"},
     {"string_with_braces_before_error.json", kUnknownName, kError, "", 4, 51, "/materials/}{",
      "unknown key \"ior\"; expected one of: albedo, alpha, bump_map, normal_map, normal_map_convention, type"},
     {"transform_unknown_step.json", kUnknownName, kError, "", 5, 42, "/shapes/0/transform/0",
@@ -170,17 +177,17 @@ const BadInput kBadInputs[] = {
     {"unknown_fresnel.json", kUnknownName, kError, "", 3, 60, "/materials/glass/fresnel",
      "unknown fresnel \"shlick\"; expected one of: exact, schlick"},
     {"unknown_integrator_type.json", kUnknownName, kError, "", 2, 26, "/integrator/type",
-     "unknown integrator type \"volpath\"; expected one of: albedo, ao, bsdf, depth, normals, path, whitted"},
+     "unknown integrator type \"bdpt\"; expected one of: albedo, ao, bsdf, depth, normals, path, volpath, whitted"},
     {"unknown_light_type.json", kUnknownName, kError, "", 2, 23, "/lights/0/type",
      "unknown light type \"sun\"; expected one of: directional, environment, point, spot"},
     {"unknown_material_type.json", kUnknownName, kError, "", 3, 21, "/materials/red/type",
-     "unknown material type \"glossy\"; expected one of: blend, coated_conductor, coated_diffuse, conductor, dielectric, diffuse, mirror, mix, thin_dielectric, transmission"},
+     "unknown material type \"glossy\"; expected one of: blend, coated_conductor, coated_diffuse, conductor, dielectric, diffuse, interface, mirror, mix, thin_dielectric, transmission"},
     {"unknown_metal.json", kUnknownName, kError, "", 3, 44, "/materials/gold/metal",
      "unknown metal \"Gold\"; expected one of: Ag, Al, Au, Cr, Cu, CuZn, Fe, Ti"},
     {"unknown_shape_type.json", kUnknownName, kError, "", 4, 14, "/shapes/0/type",
      "unknown shape type \"shpere\"; expected one of: disk, instance, mesh, quad, sphere"},
     {"unknown_top_level_key.json", kUnknownName, kError, "", 2, 3, "",
-     "unknown key \"renderer\"; expected one of: camera, film, integrator, lights, materials, objects, sampler, shapes, textures"},
+     "unknown key \"renderer\"; expected one of: camera, film, integrator, lights, materials, media, objects, sampler, shapes, textures"},
     {"instance_unknown_object.json", kUnknownName, kError, "", 5, 36, "/shapes/0/object",
      "unknown object \"tre\" (did you mean \"tree\"?)"},
     {"unknown_texture.json", kUnknownName, kError, "", 3, 64, "/materials/m/albedo/texture",

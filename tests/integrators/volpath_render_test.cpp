@@ -13,10 +13,12 @@
 //   - grey media render the same in RGB and spectral mode.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <string>
 
 #include "candela/formats/json/scene_loader.h"
+#include "candela/render/renderer.h"
 #include "support/render_moments.h"
 
 namespace candela {
@@ -196,6 +198,28 @@ TEST(VolPath, GreyMediaRenderAlikeInBothModes) {
     EXPECT_TRUE(family.passed()) << family.summary();
     const test::ZTestFamily off = test::compare_blocks_and_whole(rgb, spectral, 4, 1.1);
     EXPECT_FALSE(off.passed()) << off.summary();
+}
+
+// A medium far denser than any real one (albedo 1, or absorbing) renders in bounded time: the
+// path scatters at most max_depth times, and its shadow rays end at their first collision.
+TEST(VolPath, ExtremelyDenseMediaDoNotHang) {
+    for (const char* coefficients : {R"("sigma_a": 0, "sigma_s": 1e30)", R"("sigma_a": 1e30, "sigma_s": 0)",
+                                     R"("sigma_a": 1e20, "sigma_s": 1e25, "Le": 1)"}) {
+        SCOPED_TRACE(coefficients);
+        const Scene scene = scene_of(R"({"integrator": {"type": "volpath", "max_depth": 200},
+          "sampler": {"spp": 4},
+          "media": {"dense": {"type": "homogeneous", )" + std::string(coefficients) + R"(}},
+          "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 40, "resolution": [16, 16]},
+          "materials": {"boundary": {"type": "interface"}},
+          "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "boundary", "interior": "dense"}],
+          "lights": [{"type": "environment", "color": 1}]})");
+        const auto start = std::chrono::steady_clock::now();
+        const RenderResult r = render(scene, {.threads = 2});
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        EXPECT_LT(seconds, 10.0);
+        EXPECT_EQ(r.stats.dropped_samples, 0u);
+        for (const Rgb& p : r.image.pixels) EXPECT_TRUE(p.is_finite());
+    }
 }
 
 }  // namespace

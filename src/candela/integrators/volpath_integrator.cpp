@@ -39,9 +39,11 @@ bool survive_volume_roulette(Color& beta, const Color& r_u, float eta_scale, int
     return true;
 }
 
-// The most medium events (null collisions included) one path may take: the work of a path in a
-// medium far denser than its majorant is bounded (a path that reaches it ends there, a bias that
-// no scene short of a pathological grid meets; docs/SCENE_FORMAT.md, "Media").
+// The most medium events (null collisions included) one path, or one shadow ray, may take: the
+// work of a path in a medium far denser than its majorant is bounded (a path that reaches it ends
+// there, a bias that no scene short of a pathological grid meets; docs/SCENE_FORMAT.md, "Media").
+// A majorant so large that its steps fall below a float's resolution along the ray would
+// otherwise never reach the ray's end.
 constexpr int kMaxMediumEvents = 1 << 20;
 
 // The medium a ray leaving a surface in direction w travels in: the shape's interior or exterior
@@ -98,6 +100,7 @@ struct VolumePath {
     Color transmittance(Ray ray, uint32_t medium, const std::optional<Vec3f>& target, Rng& rng, Color& r_l,
                         Color& r_u) const {
         Color T_ray(1.0f);
+        int events = 0;
         for (;;) {
             ++counters.shadow;
             std::optional<SurfaceHit> hit = accel.intersect(ray);
@@ -110,6 +113,10 @@ struct VolumePath {
                             m, ray, t_max, rng.next_float(), rng, pc.ch, pc.hero,
                             [&](const Vec3f&, const MediumPoint& mp, const Color& sigma_maj, const Color& T) {
                                 // Ratio tracking: each null collision keeps sigma_n / sigma_maj.
+                                if (++events > kMaxMediumEvents) {
+                                    T_ray = Color(0.0f);
+                                    return false;
+                                }
                                 const Color sigma_n = clamp_channels(sigma_maj - mp.sigma_a - mp.sigma_s, 0.0f, kInfinity);
                                 const float pdf = T[pc.hero] * sigma_maj[pc.hero];
                                 T_ray *= T * sigma_n / pdf;

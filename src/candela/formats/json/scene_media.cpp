@@ -60,9 +60,10 @@ HomogeneousMedium read_homogeneous(JsonCursor& c, const Scene& scene) {
 
 MediumSpectrum read_medium_coefficient(const JsonCursor& c, const Scene& scene) {
     if (std::optional<DenseSpectrum> s = read_spectrum(c, scene.file.parent_path())) {
-        for (float v : s->v)
-            if (!(v >= 0.0f) || !std::isfinite(v))
-                c.fail(fmt::format("a medium's coefficient must be finite and >= 0 at every wavelength, got {}", v));
+        for (int i = 0; i < kDenseSamples; ++i)
+            if (const float v = s->v[size_t(i)]; !(v >= 0.0f) || !std::isfinite(v))
+                c.fail(fmt::format("a medium's coefficient must be finite and >= 0 at every wavelength; it is {} at {} nm",
+                                   v, kDenseLambdaMin + i));
         // RGB mode: the spectrum's colour as a reflectance's (linear in the spectrum), clipped at 0.
         const Rgb rgb = reflectance_rgb(*s);
         return MediumSpectrum{Rgb(std::max(rgb.r, 0.0f), std::max(rgb.g, 0.0f), std::max(rgb.b, 0.0f)), *s};
