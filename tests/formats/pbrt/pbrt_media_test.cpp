@@ -225,6 +225,17 @@ TEST(PbrtMedia, ShapesGetTheirMediaWhereTheyDiffer) {
     EXPECT_EQ(keys[2], "media");
 }
 
+TEST(PbrtMedia, TheMediumInterfaceOutlivesWorldBegin) {
+    // pbrt-v4's WorldBegin resets the transformation only: a MediumInterface given for the camera
+    // still holds for the shapes and lights that follow.
+    const ImportedScene s = import(std::string("MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+                                               "MediumInterface \"\" \"fog\"\nCamera \"perspective\"\nWorldBegin\n") +
+                                   kLight + "Shape \"sphere\"\n");
+    EXPECT_EQ(s.document["camera"]["medium"], "fog");
+    EXPECT_EQ(s.document["shapes"][0]["interior"], "");
+    EXPECT_EQ(s.document["shapes"][0]["exterior"], "fog");
+}
+
 TEST(PbrtMedia, ObjectShapesKeepTheirMediaAndTexturedSpheresCarryThemIntoTheirObject) {
     const ImportedScene s = import(std::string("MakeNamedMedium \"in\" \"string type\" \"homogeneous\"\n"
                                                "WorldBegin\n") +
