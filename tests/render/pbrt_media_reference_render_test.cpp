@@ -30,11 +30,8 @@ struct MediaScene {
 };
 
 constexpr MediaScene kScenes[] = {
-    {"fog-spot-glass", 0.02, 0.28},
-    {"grid-temperature", 0.02, 0.18},
-    {"rgbgrid-sphere", 0.02, 0.12},
-    {"cloud-box", 0.01, 0.05},
-    {"vdb-smoke", 0.01, 0.04},
+    {"fog-spot-glass", 0.02, 0.28}, {"grid-temperature", 0.02, 0.18}, {"rgbgrid-sphere", 0.02, 0.12},
+    {"cloud-box", 0.01, 0.05},      {"vdb-smoke", 0.01, 0.04},
 };
 
 // gtest prints the scene's name, not its bytes.

@@ -60,8 +60,8 @@ TEST(PbrtMedia, HomogeneousMediumTakesPbrtsParametersUnderCandelasNames) {
     EXPECT_EQ(fog["Le_scale"], 4.0);
     EXPECT_FALSE(fog.contains("transform"));  // identity
     // pbrt-v4's defaults (sigma_a = sigma_s = 1, scale 1, g 0, no emission) are the loader's.
-    const ImportedScene d = import(std::string("MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\nWorldBegin\n") +
-                                   kLight);
+    const ImportedScene d =
+        import(std::string("MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\nWorldBegin\n") + kLight);
     EXPECT_EQ(d.document["media"]["m"], Json({{"type", "homogeneous"}}));
 }
 
@@ -83,7 +83,8 @@ TEST(PbrtMedia, APresetReplacesSigmaAAndSigmaS) {
                                                "\"string preset\" \"Yoghurt\" \"rgb sigma_a\" [1 2 3]\nWorldBegin\n") +
                                    kLight);
     EXPECT_EQ(u.document["media"]["m"], Json({{"type", "homogeneous"}, {"sigma_a", Json::array({1.0, 2.0, 3.0})}}));
-    EXPECT_TRUE(has_warning(u, "inline.pbrt:1:49: MakeNamedMedium \"m\": preset \"Yoghurt\" not found")) << all_warnings(u);
+    EXPECT_TRUE(has_warning(u, "inline.pbrt:1:49: MakeNamedMedium \"m\": preset \"Yoghurt\" not found"))
+        << all_warnings(u);
 }
 
 TEST(PbrtMedia, TheMediumsTransformIsTheOneCurrentAtTheDirective) {
@@ -141,17 +142,17 @@ TEST(PbrtMedia, UniformGridWithTemperature) {
 }
 
 TEST(PbrtMedia, RgbGridCloudAndNanoVdb) {
-    const ImportedScene s = import(
-        std::string("WorldBegin\n") + kLight +
-        "MakeNamedMedium \"c\" \"string type\" \"rgbgrid\" \"integer nx\" 2 \"rgb sigma_a\" [1 2 3 4 5 6] "
-        "\"rgb sigma_s\" [0 1 0 1 0 1] \"rgb Le\" [0 0 0 9 8 7] \"float Lescale\" 2 \"float scale\" 0.5 "
-        "\"float g\" 0.1 \"point3 p1\" [2 2 2]\n"
-        "MakeNamedMedium \"sky\" \"string type\" \"cloud\" \"float density\" 3 \"float wispiness\" 0.5 "
-        "\"float frequency\" 7 \"rgb sigma_a\" [0.1 0.1 0.1] \"float g\" 0.7 \"point3 p0\" [-1 0 -1]\n"
-        "MakeNamedMedium \"vdb\" \"string type\" \"nanovdb\" \"string filename\" \"volumes/smoke.nvdb\" "
-        "\"string gridname\" \"dens\" \"string temperaturename\" \"heat\" \"float Lescale\" 0.25 "
-        "\"float temperatureoffset\" 100 \"float temperaturescale\" 1000 \"rgb sigma_s\" [2 2 2] "
-        "\"float scale\" 4 \"float g\" 0.2\n");
+    const ImportedScene s =
+        import(std::string("WorldBegin\n") + kLight +
+               "MakeNamedMedium \"c\" \"string type\" \"rgbgrid\" \"integer nx\" 2 \"rgb sigma_a\" [1 2 3 4 5 6] "
+               "\"rgb sigma_s\" [0 1 0 1 0 1] \"rgb Le\" [0 0 0 9 8 7] \"float Lescale\" 2 \"float scale\" 0.5 "
+               "\"float g\" 0.1 \"point3 p1\" [2 2 2]\n"
+               "MakeNamedMedium \"sky\" \"string type\" \"cloud\" \"float density\" 3 \"float wispiness\" 0.5 "
+               "\"float frequency\" 7 \"rgb sigma_a\" [0.1 0.1 0.1] \"float g\" 0.7 \"point3 p0\" [-1 0 -1]\n"
+               "MakeNamedMedium \"vdb\" \"string type\" \"nanovdb\" \"string filename\" \"volumes/smoke.nvdb\" "
+               "\"string gridname\" \"dens\" \"string temperaturename\" \"heat\" \"float Lescale\" 0.25 "
+               "\"float temperatureoffset\" 100 \"float temperaturescale\" 1000 \"rgb sigma_s\" [2 2 2] "
+               "\"float scale\" 4 \"float g\" 0.2\n");
     EXPECT_TRUE(s.warnings.empty()) << all_warnings(s);
     const Json& media = s.document["media"];
     const Json& c = media["c"];
@@ -268,8 +269,9 @@ TEST(PbrtMedia, TheCameraTakesTheOutsideMediumCurrentAtCamera) {
     const ImportedScene none = import(std::string("WorldBegin\n") + kLight);
     EXPECT_FALSE(none.document["camera"].contains("medium"));
     // pbrt-v4 looks the camera's medium up as the world begins.
-    const std::string e = error_of("MediumInterface \"fog\"\nCamera \"perspective\"\nWorldBegin\n"
-                                   "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n");
+    const std::string e = error_of(
+        "MediumInterface \"fog\"\nCamera \"perspective\"\nWorldBegin\n"
+        "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n");
     EXPECT_NE(e.find("inline.pbrt:2:1: Camera: medium \"fog\" is not defined"), std::string::npos) << e;
 }
 
@@ -286,7 +288,8 @@ TEST(PbrtMedia, InterfaceMaterialAndItsAreaLightsAsPbrtV4) {
     // pbrt-v4 makes no light of a shape without a material (scene.cpp, CreateLights) ...
     const Json& shape = s.document["shapes"][0];
     EXPECT_FALSE(shape.contains("emission"));
-    EXPECT_TRUE(has_warning(s, "inline.pbrt:6:16: AreaLightSource on a shape of material \"interface\"")) << all_warnings(s);
+    EXPECT_TRUE(has_warning(s, "inline.pbrt:6:16: AreaLightSource on a shape of material \"interface\""))
+        << all_warnings(s);
     // ... and candela's interface takes no alpha.
     EXPECT_EQ(m[shape["material"].get<std::string>()], Json({{"type", "interface"}}));
     EXPECT_TRUE(has_warning(s, "inline.pbrt:7:16: alpha on a shape of material \"interface\"")) << all_warnings(s);
@@ -301,7 +304,8 @@ TEST(PbrtMedia, TheIntegratorIsVolpathWherePbrtV4RendersMedia) {
     EXPECT_EQ(import(medium + "WorldBegin\n" + kLight).document["integrator"]["type"], "volpath");
     // A file without WorldBegin has its options all the same.
     EXPECT_EQ(import(medium).document["integrator"]["type"], "volpath");
-    const ImportedScene v = import("Integrator \"volpath\" \"integer maxdepth\" 12\nWorldBegin\n" + std::string(kLight));
+    const ImportedScene v =
+        import("Integrator \"volpath\" \"integer maxdepth\" 12\nWorldBegin\n" + std::string(kLight));
     EXPECT_EQ(v.document["integrator"]["type"], "volpath");
     EXPECT_EQ(v.document["integrator"]["max_depth"], 12);
     EXPECT_TRUE(v.warnings.empty()) << all_warnings(v);
@@ -332,9 +336,10 @@ TEST(PbrtMedia, ErrorsAreLocatedAsPbrtV4Stops) {
                  "inline.pbrt:3:21: MakeNamedMedium \"m\": unknown medium type \"fluffy\"");
     expect_error("WorldBegin\nMakeNamedMedium \"m\" \"float g\" 0\n",
                  "inline.pbrt:2:1: MakeNamedMedium \"m\": \"string type\" is required");
-    expect_error("MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\n"
-                 "MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\n",
-                 "inline.pbrt:2:1: MakeNamedMedium: medium \"m\" is defined twice (first at ");
+    expect_error(
+        "MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\n"
+        "MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\n",
+        "inline.pbrt:2:1: MakeNamedMedium: medium \"m\" is defined twice (first at ");
     // Shapes' media are looked up once the file is read: later is fine, never is an error.
     EXPECT_EQ(error_of("WorldBegin\nMediumInterface \"m\" \"\"\nShape \"sphere\"\n"
                        "MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\n"),
@@ -347,18 +352,22 @@ TEST(PbrtMedia, ErrorsAreLocatedAsPbrtV4Stops) {
     // Grids: pbrt-v4's checks.
     expect_error("WorldBegin\nMakeNamedMedium \"g\" \"string type\" \"uniformgrid\" \"integer nx\" 2\n",
                  "inline.pbrt:2:1: uniformgrid: no \"float density\" values");
-    expect_error("WorldBegin\nMakeNamedMedium \"g\" \"string type\" \"uniformgrid\" \"integer nx\" 2 "
-                 "\"float density\" [1 2 3]\n",
-                 "the grid has 3 density values; expected nx*ny*nz = 2*1*1 = 2");
-    expect_error("WorldBegin\nMakeNamedMedium \"g\" \"string type\" \"uniformgrid\" \"float density\" [1] "
-                 "\"float temperature\" [1] \"rgb Le\" [1 1 1]\n",
-                 "uniformgrid: both \"Le\" and \"temperature\" are given");
-    expect_error("WorldBegin\nMakeNamedMedium \"g\" \"string type\" \"uniformgrid\" \"float density\" [1 2] "
-                 "\"integer nx\" 2 \"float Lescale\" [1 2 3]\n",
-                 "\"Lescale\" has 3 values; expected one per voxel, 2");
-    expect_error("WorldBegin\nMakeNamedMedium \"g\" \"string type\" \"rgbgrid\" \"rgb Le\" [1 1 1] "
-                 "\"rgb sigma_s\" [1 1 1]\n",
-                 "rgbgrid: \"Le\" needs \"sigma_a\"");
+    expect_error(
+        "WorldBegin\nMakeNamedMedium \"g\" \"string type\" \"uniformgrid\" \"integer nx\" 2 "
+        "\"float density\" [1 2 3]\n",
+        "the grid has 3 density values; expected nx*ny*nz = 2*1*1 = 2");
+    expect_error(
+        "WorldBegin\nMakeNamedMedium \"g\" \"string type\" \"uniformgrid\" \"float density\" [1] "
+        "\"float temperature\" [1] \"rgb Le\" [1 1 1]\n",
+        "uniformgrid: both \"Le\" and \"temperature\" are given");
+    expect_error(
+        "WorldBegin\nMakeNamedMedium \"g\" \"string type\" \"uniformgrid\" \"float density\" [1 2] "
+        "\"integer nx\" 2 \"float Lescale\" [1 2 3]\n",
+        "\"Lescale\" has 3 values; expected one per voxel, 2");
+    expect_error(
+        "WorldBegin\nMakeNamedMedium \"g\" \"string type\" \"rgbgrid\" \"rgb Le\" [1 1 1] "
+        "\"rgb sigma_s\" [1 1 1]\n",
+        "rgbgrid: \"Le\" needs \"sigma_a\"");
     expect_error("WorldBegin\nMakeNamedMedium \"g\" \"string type\" \"rgbgrid\" \"float sigma_a\" [1 1 1]\n",
                  "\"sigma_a\" must be \"rgb sigma_a\" values, not float");
     expect_error("WorldBegin\nMakeNamedMedium \"g\" \"string type\" \"nanovdb\"\n",

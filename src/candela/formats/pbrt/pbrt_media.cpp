@@ -59,7 +59,10 @@ void temperature_mapping(const Params& p, Json& m) {
 Json grid_size(const Params& p, size_t count, const char* what) {
     const long long nx = p.int_or("nx", 1), ny = p.int_or("ny", 1), nz = p.int_or("nz", 1);
     if (nx < 1 || ny < 1 || nz < 1)
-        p.fail(p.find(nx < 1 ? "nx" : ny < 1 ? "ny" : "nz"), fmt::format("{}: nx, ny and nz must be >= 1", p.directive()));
+        p.fail(p.find(nx < 1   ? "nx"
+                      : ny < 1 ? "ny"
+                               : "nz"),
+               fmt::format("{}: nx, ny and nz must be >= 1", p.directive()));
     const double n = double(nx) * double(ny) * double(nz);
     if (double(count) != n)
         p.fail(nullptr, fmt::format("{}: the grid has {} {} values; expected nx*ny*nz = {}*{}*{} = {}", p.directive(),
@@ -150,8 +153,8 @@ Json rgb_grid_medium(const Params& p) {
                               Le = rgb_grid(p, "Le");
     if (sigma_a.empty() && sigma_s.empty()) p.fail(nullptr, "rgbgrid: \"rgb sigma_a\" or \"rgb sigma_s\" is required");
     if (!sigma_a.empty() && !sigma_s.empty() && sigma_a.size() != sigma_s.size())
-        p.fail(p.find("sigma_s"), fmt::format("rgbgrid: sigma_a has {} values, sigma_s {}", sigma_a.size() / 3,
-                                              sigma_s.size() / 3));
+        p.fail(p.find("sigma_s"),
+               fmt::format("rgbgrid: sigma_a has {} values, sigma_s {}", sigma_a.size() / 3, sigma_s.size() / 3));
     if (!Le.empty() && sigma_a.empty()) p.fail(p.find("Le"), "rgbgrid: \"Le\" needs \"sigma_a\" (as in pbrt-v4)");
     const size_t n = (sigma_a.empty() ? sigma_s.size() : sigma_a.size()) / 3;
     if (!Le.empty() && Le.size() / 3 != n)
