@@ -127,8 +127,8 @@ TEST(PbrtMedia, UniformGridWithTemperature) {
     EXPECT_EQ(m["sigma_s"], 0.5);
     EXPECT_EQ(m["scale"], 3.0);
     EXPECT_EQ(m["g"], -0.5);
-    // temperatureoffset wins over temperaturecutoff; Le instead of a temperature; one Lescale
-    // for a grid of one voxel is a number.
+    // temperatureoffset wins over temperaturecutoff; Le instead of a temperature; Lescale is an
+    // array even for a grid of one voxel (pbrt-v4's grid of it is no constant).
     const ImportedScene o = import(std::string("WorldBegin\n") + kLight +
                                    "MakeNamedMedium \"g\" \"string type\" \"uniformgrid\" \"float density\" [2] "
                                    "\"float temperatureoffset\" 10 \"float temperaturecutoff\" 400 \"rgb Le\" [1 0 0] "
@@ -137,7 +137,7 @@ TEST(PbrtMedia, UniformGridWithTemperature) {
     const Json& g = o.document["media"]["g"];
     EXPECT_EQ(g["temperature_offset"], 10.0);
     EXPECT_EQ(g["Le"], Json::array({1.0, 0.0, 0.0}));
-    EXPECT_EQ(g["Le_scale"], 5.0);
+    EXPECT_EQ(g["Le_scale"], Json::array({5.0}));
     EXPECT_EQ(g["size"], Json::array({1, 1, 1}));
 }
 

@@ -132,16 +132,14 @@ Json uniform_grid(const Params& p) {
     } else {
         copy_colour(p, "Le", "Le", m);
     }
-    // Lescale: per voxel; one value is a grid of one voxel (pbrt-v4 wants nx*ny*nz of them).
+    // Lescale: one value per voxel, always written as an array (pbrt-v4 makes a grid of it; a
+    // number would read as a constant, which pbrt-v4's grid lookup is not: see docs/PBRT.md).
     if (const Parameter* s = p.find("Lescale")) {
         const std::vector<double> scale = float_grid(p, "Lescale");
         if (scale.size() != density.size())
             p.fail(s, fmt::format("uniformgrid: \"Lescale\" has {} values; expected one per voxel, {}", scale.size(),
                                   density.size()));
-        if (scale.size() == 1)
-            m["Le_scale"] = scale[0];
-        else
-            m["Le_scale"] = scale;
+        m["Le_scale"] = scale;
     }
     temperature_mapping(p, m);
     return m;
