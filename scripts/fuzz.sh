@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets (scripts/build-sanitize.sh) and fuzzes each for a while:
 #   scripts/fuzz.sh [--smoke SECONDS | --long SECONDS] [TARGET...]
 # --smoke (default, 30 s per target) is what CI runs; --long is for the recorded runs in
-# docs/RELIABILITY.md. Targets: scene obj ply hdr exr pbrt (default: all). Each target first runs
+# docs/RELIABILITY.md. Targets: scene obj ply hdr exr pbrt nvdb (default: all). Each target first runs
 # every input in fuzz/regressions/TARGET/ (inputs that once crashed it), then fuzzes from its
 # seeds (the repository's scenes, meshes, images and bad inputs) and its working corpus, which
 # grows in BUILD_DIR/fuzz-corpus/TARGET/ from run to run. A crash, a hang (an input taking over
@@ -22,7 +22,7 @@ while [ $# -gt 0 ]; do
     *) targets+=("$1"); shift ;;
   esac
 done
-all_targets=(scene obj ply hdr exr pbrt)
+all_targets=(scene obj ply hdr exr pbrt nvdb)
 [ ${#targets[@]} -eq 0 ] && targets=("${all_targets[@]}")
 for t in "${targets[@]}"; do
   [[ " ${all_targets[*]} " == *" $t "* ]] || { echo "fuzz: unknown target $t; expected one of: ${all_targets[*]}" >&2; exit 2; }
@@ -45,6 +45,7 @@ seed_files() {
     hdr) patterns=(-iname '*.hdr') ;;
     exr) patterns=(-iname '*.exr') ;;
     pbrt) patterns=(-iname '*.pbrt') ;;
+    nvdb) patterns=(-iname '*.nvdb') ;;
   esac
   find scenes tests/data -type f \( "${patterns[@]}" \) -size -65k | sort
 }
@@ -66,6 +67,15 @@ for t in "${targets[@]}"; do
   mkdir -p "$seeds" "$corpus" "$artifacts" "$(dirname "$log")"
   seed_files "$t" | while read -r f; do cp "$f" "$seeds/$(echo "$f" | tr '/' '_')"; done
   case "$t" in hdr|exr) cp "$image_seeds"/*."$t" "$seeds/" ;; esac
+  # The NanoVDB fixtures are kept gzip-compressed (tests/data/vdb/README.md); inflated, they are
+  # 0.3 to 2.4 MB, so only those under 1 MB seed the target.
+  if [ "$t" = nvdb ]; then
+    for f in tests/data/vdb/*.nvdb.gz; do
+      out="$seeds/$(basename "$f" .gz)"
+      gzip -dc "$f" >"$out"
+      [ "$(stat -c %s "$out")" -lt 1048576 ] || rm "$out"
+    done
+  fi
   limits=(-timeout=10 -rss_limit_mb=2560 -malloc_limit_mb=1024)
   dict=()
   [ -f "fuzz/$t.dict" ] && dict=("-dict=fuzz/$t.dict")

@@ -9,6 +9,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
   # gzip-compressed PLY meshes (.ply.gz) and Loop subdivision (pbrt-v4's plymesh, loopsubdiv).
   zlib1g-dev libosd-dev
+  # OpenVDB volume grids (.vdb); its headers need Boost's, which libopenvdb-dev does not depend on.
+  libopenvdb-dev libboost-dev
   # Rendering one image on many machines (mpirun candela render, docs/CLUSTER.md).
   libopenmpi-dev openmpi-bin
   # The sanitizer and fuzzing build (scripts/sanitize.sh, scripts/fuzz.sh): clang 14, its

@@ -8,8 +8,9 @@
 //   - white furnace: a sphere of a scattering, non-absorbing medium (albedo 1, chromatic sigma_s,
 //     anisotropic) under an environment of 1 is invisible: 1 in every pixel, in both colour modes,
 //     with the camera outside it and inside it;
-//   - NEE + phase/BSDF sampling (MIS) and NEE alone agree on a fog-filled room with coloured
-//     glass and chromatic smoke;
+//   - NEE + phase/BSDF sampling (MIS), NEE alone, and phase/BSDF sampling alone (the bsdf
+//     integrator on a scene with media) agree on a fog-filled room with coloured glass and
+//     chromatic smoke;
 //   - grey media render the same in RGB and spectral mode.
 #include <gtest/gtest.h>
 
@@ -155,11 +156,16 @@ TEST(VolPath, AlbedoOneMediumIsInvisibleInAWhiteFurnace) {
 
 // A room of fog (the camera in it) lit by a quad light and a spot light: a glass sphere with an
 // amber interior, a box of chromatic smoke with an interface boundary.
-std::string fog_room_scene(bool spectral, bool mis, bool grey) {
+std::string fog_room_scene(bool spectral, bool mis, bool grey, const std::string& type = "volpath",
+                           bool spot = true, int spp_mis = 1536, int spp_nee = 2048) {
     const std::string amber = grey ? "0.4" : "[0.1, 0.5, 1.5]";
     const std::string smoke = grey ? "1.0" : "[2.0, 1.0, 0.3]";
-    return R"({)" + integrator_json(spectral, mis, 40) + R"(,
-      "sampler": {"type": "independent", "spp": )" + std::string(mis ? "1536" : "2048") + R"(, "seed": )" +
+    std::string integrator = integrator_json(spectral, mis, 40);
+    integrator.replace(integrator.find("volpath"), 7, type);
+    const std::string spot_light = R"([{"type": "spot", "position": [-2, 3, -2], "look_at": [0, 0, 1], "intensity": 6,
+                                       "cone_angle": 25, "cone_delta": 5}])";
+    return R"({)" + integrator + R"(,
+      "sampler": {"type": "independent", "spp": )" + std::to_string(mis ? spp_mis : spp_nee) + R"(, "seed": )" +
            (mis ? "21" : "22") + R"(},
       "media": {"fog": {"type": "homogeneous", "sigma_a": 0.02, "sigma_s": 0.15, "g": 0.3},
                 "amber": {"type": "homogeneous", "sigma_a": )" + amber + R"(, "sigma_s": 0.2},
@@ -175,8 +181,7 @@ std::string fog_room_scene(bool spectral, bool mis, bool grey) {
         {"type": "sphere", "center": [1.0, 0.8, 0.8], "radius": 0.8, "material": "boundary", "interior": "smoke", "exterior": "fog"},
         {"type": "quad", "corner": [-0.5, 3.5, -0.5], "edge1": [1, 0, 0], "edge2": [0, 0, 1], "material": "lamp",
          "emission": 8}],
-      "lights": [{"type": "spot", "position": [-2, 3, -2], "look_at": [0, 0, 1], "intensity": 6, "cone_angle": 25,
-                  "cone_delta": 5}]})";
+      "lights": )" + (spot ? spot_light : "[]") + "}";
 }
 
 TEST(VolPath, NeeAloneAndMisAgreeInAFogRoom) {
@@ -187,6 +192,23 @@ TEST(VolPath, NeeAloneAndMisAgreeInAFogRoom) {
         const test::ZTestFamily family = test::compare_blocks_and_whole(with_mis, nee, 4);
         EXPECT_TRUE(family.passed()) << family.summary();
         const test::ZTestFamily off = test::compare_blocks_and_whole(with_mis, nee, 4, 1.1);
+        EXPECT_FALSE(off.passed()) << off.summary();
+    }
+}
+
+// Without light sampling (the bsdf integrator on a scene with media) light is found only where
+// scattering leads: it checks NEE's transmittance through media and interfaces, the MIS weights
+// and the spectral MIS of both. Only the quad light, which both can find.
+TEST(VolPath, WithAndWithoutLightSamplingAgreeInAFogRoom) {
+    for (bool spectral : {false, true}) {
+        SCOPED_TRACE(fmt::format("spectral {}", spectral));
+        const test::RenderMoments with_nee =
+            test::render_moments(scene_of(fog_room_scene(spectral, true, false, "volpath", false, 1024)));
+        const test::RenderMoments without =
+            test::render_moments(scene_of(fog_room_scene(spectral, false, false, "bsdf", false, 0, 4096)));
+        const test::ZTestFamily family = test::compare_blocks_and_whole(with_nee, without, 4);
+        EXPECT_TRUE(family.passed()) << family.summary();
+        const test::ZTestFamily off = test::compare_blocks_and_whole(with_nee, without, 4, 1.1);
         EXPECT_FALSE(off.passed()) << off.summary();
     }
 }

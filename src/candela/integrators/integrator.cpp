@@ -20,6 +20,16 @@ TransportIntegrator::TransportIntegrator(const Scene& scene, const Accelerator& 
       spectral_(scene.integrator.spectral),
       sensor_(make_sensor(scene.film)) {}
 
+namespace {
+
+// Whether a scene has anything only volpath's loop handles: media or `interface` surfaces.
+bool needs_volume_transport(const Scene& scene) {
+    return !scene.media.empty() ||
+           std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.interface; });
+}
+
+}  // namespace
+
 std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Accelerator& accel, const LightSet& lights) {
     const IntegratorSettings& s = scene.integrator;
     switch (s.type) {
@@ -30,14 +40,14 @@ std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Accelerato
             // refuse such scenes first, with their own messages).
             if (lights.has_delta_lights())
                 throw RenderError("the bsdf integrator cannot see point, spot or directional lights");
+            // With media: volpath's estimator without light sampling.
+            if (needs_volume_transport(scene)) return std::make_unique<VolPathIntegrator>(scene, accel, lights, false);
             return std::make_unique<BsdfIntegrator>(scene, accel, lights);
         case IntegratorType::kWhitted: return std::make_unique<WhittedIntegrator>(scene, accel, lights);
         case IntegratorType::kVolPath:
             // Without media or interfaces volpath's estimate is path's: path renders it, with
             // path's bits and speed (pbrt-v4's volpath differs only in its MIS heuristic there).
-            if (scene.media.empty() && std::none_of(scene.materials.begin(), scene.materials.end(),
-                                                    [](const Material& m) { return m.interface; }))
-                return std::make_unique<PathIntegrator>(scene, accel, lights);
+            if (!needs_volume_transport(scene)) return std::make_unique<PathIntegrator>(scene, accel, lights);
             return std::make_unique<VolPathIntegrator>(scene, accel, lights);
         case IntegratorType::kNormals: return std::make_unique<NormalsIntegrator>(accel);
         case IntegratorType::kDepth: return std::make_unique<DepthIntegrator>(accel, scene.camera.near);

@@ -62,8 +62,9 @@ Rng medium_rng(float a, float b) {
 
 }  // namespace
 
-VolPathIntegrator::VolPathIntegrator(const Scene& scene, const Accelerator& accel, const LightSet& lights)
-    : TransportIntegrator(scene, accel, lights) {}
+VolPathIntegrator::VolPathIntegrator(const Scene& scene, const Accelerator& accel, const LightSet& lights,
+                                     bool next_event)
+    : TransportIntegrator(scene, accel, lights), next_event_(next_event) {}
 
 Rgb VolPathIntegrator::radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
     return in_mode(ray, sampler, counters, [this](auto spectral, const Ray& r, Sampler& s, RayCounters& c,
@@ -250,7 +251,7 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
                                     return ls.infinite ? Ray{p, ls.wi, 0.0f, kInfinity}
                                                        : Ray{p, ls.p - p, 0.0f, 1.0f - kShadowEpsilon};
                                 };
-                                if (!lights_.empty())
+                                if (next_event_ && !lights_.empty())
                                     L += path.direct_light(p, light_numbers, beta, r_u, phase, phase_pdf, spawn,
                                                            [&](const Vec3f&) { return medium; }, rng);
                                 const PhaseSample ps = sample_henyey_greenstein(wo, g, bsdf_numbers.u);
@@ -294,7 +295,7 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
         if (!hit) {
             const Color Le = environment_radiance<kSpectral>(ray.d, pc.ch.lambda);
             if (!Le.is_black()) {
-                if (depth == 0 || specular_bounce)
+                if (depth == 0 || specular_bounce || !next_event_)
                     L += beta * Le / pc.average(r_u);
                 else if (settings.mis)
                     L += beta * Le / pc.average(r_u + r_l * lights_.environment_pdf(normalize(ray.d)));
@@ -303,7 +304,7 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
         }
         const Color Le = emitted<kSpectral>(hit->shape_id, hit->ng, -ray.d, pc.ch.lambda, emission_cache);
         if (!Le.is_black()) {
-            if (depth == 0 || specular_bounce)
+            if (depth == 0 || specular_bounce || !next_event_)
                 L += beta * Le / pc.average(r_u);
             else if (settings.mis)
                 L += beta * Le / pc.average(r_u + r_l * lights_.pdf(prev_p, hit->shape_id, hit->p, hit->ng));
@@ -319,7 +320,7 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
         if (depth++ >= settings.max_depth) break;
 
         PathVertex v = make_vertex<kSpectral>(scene_, accel_, *hit, ray, w, bsdf_cache);
-        if (!v.bsdf.is_delta_only() && !lights_.empty()) {
+        if (next_event_ && !v.bsdf.is_delta_only() && !lights_.empty()) {
             auto f = [&](const Vec3f& wi_world) {
                 const Vec3f wi = v.frame.to_local(wi_world);
                 return v.bsdf.eval(v.wo, wi, TransportMode::kRadiance) * std::abs(wi.z);

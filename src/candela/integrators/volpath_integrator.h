@@ -15,7 +15,9 @@
 // scattering of a medium whose red coefficient is 0.
 //
 // A scene without media and without `interface` surfaces renders with the path integrator
-// (make_integrator): the same bits, the same speed.
+// (make_integrator): the same bits, the same speed. Without next-event estimation (next_event
+// false: the `bsdf` integrator on a scene with media) light is found only by scattering into it,
+// the estimator that checks volpath's light sampling and shadow rays (tests/integrators/).
 #include "candela/integrators/transport_integrators.h"
 #include "candela/media/medium.h"
 
@@ -23,12 +25,14 @@ namespace candela {
 
 class VolPathIntegrator final : public TransportIntegrator {
   public:
-    VolPathIntegrator(const Scene& scene, const Accelerator& accel, const LightSet& lights);
+    VolPathIntegrator(const Scene& scene, const Accelerator& accel, const LightSet& lights, bool next_event = true);
     Rgb radiance(const Ray& ray, Sampler& sampler, RayCounters& counters) const override;
 
   private:
     template <bool kSpectral>
     Color trace(const Ray& ray, Sampler& sampler, RayCounters& counters, SampledWavelengths* w) const;
+
+    bool next_event_ = true;
 };
 
 }  // namespace candela

@@ -9,9 +9,11 @@
 #include <charconv>
 #include <fstream>
 #include <string>
+#include <type_traits>
 
 #include "candela/film/film.h"
 #include "candela/geometry/accelerator.h"
+#include "candela/media/medium.h"
 #include "candela/scene/scene.h"
 
 namespace candela {
@@ -146,6 +148,37 @@ uint64_t texture_loading_memory_bytes(uint64_t file_bytes, int width, int height
                                   uint64_t(std::max(channels, 0)) * uint64_t(decoded_bytes)));
 }
 
+uint64_t grid_medium_memory_bytes(uint64_t voxels, int float_grids, int rgb_grids, bool blackbody) {
+    // Two majorant grids of 16^3 floats at most (rgbgrid keeps one per colour mode); the
+    // blackbody table is 4096 x 3 floats.
+    constexpr uint64_t kMajorants = 2 * 16 * 16 * 16 * sizeof(float);
+    constexpr uint64_t kBlackbody = uint64_t(BlackbodyRgbTable::kSize) * 3 * sizeof(float);
+    const uint64_t per_voxel = uint64_t(float_grids) * sizeof(float) + uint64_t(rgb_grids) * (sizeof(Rgb) + sizeof(RgbSpectrum));
+    return plus(times(voxels, per_voxel), kMajorants + (blackbody ? kBlackbody : 0));
+}
+
+namespace {
+
+uint64_t medium_memory_bytes(const Medium& medium) {
+    auto voxels = [](const auto& lattice) { return uint64_t(lattice.values.size()); };
+    return visit(
+        [&](const auto& m) -> uint64_t {
+            using M = std::decay_t<decltype(m)>;
+            if constexpr (std::is_same_v<M, GridMedium>) {
+                const uint64_t n = voxels(m.density.lattice) + voxels(m.temperature.lattice) + voxels(m.Le_scale.lattice);
+                return grid_medium_memory_bytes(n, 1, 0, !m.temperature.empty());
+            } else if constexpr (std::is_same_v<M, RgbGridMedium>) {
+                const uint64_t n = voxels(m.sigma_a.rgb) + voxels(m.sigma_s.rgb) + voxels(m.Le.rgb);
+                return grid_medium_memory_bytes(n, 0, 1, false);
+            } else {
+                return uint64_t(sizeof(M));
+            }
+        },
+        medium);
+}
+
+}  // namespace
+
 uint64_t scene_memory_bytes(const Scene& scene, bool statistics) {
     uint64_t bytes = film_memory_bytes(scene.camera.width, scene.camera.height);
     bytes = plus(bytes, aov_memory_bytes(scene.camera.width, scene.camera.height, scene.film.aovs));
@@ -158,6 +191,7 @@ uint64_t scene_memory_bytes(const Scene& scene, bool statistics) {
     if (scene.environment)
         bytes = plus(bytes, environment_memory_bytes(scene.environment->radiance.width,
                                                      scene.environment->radiance.height));
+    for (const Medium& m : scene.media) bytes = plus(bytes, medium_memory_bytes(m));
     return plus(bytes, scene.textures.image_memory_bytes());
 }
 

@@ -51,7 +51,12 @@ uint64_t texture_memory_bytes(int width, int height, int channels, int bytes_per
 // decoder's own copy of the texels (at their bit depth in the file: 1 or 2 bytes).
 uint64_t texture_loading_memory_bytes(uint64_t file_bytes, int width, int height, int channels,
                                       int bytes_per_channel);
-// A loaded scene at its camera resolution: film, meshes, environment and texture images.
+// A grid medium (media/grid_medium.h, rgb_grid_medium.h) of `voxels` samples in each of
+// `float_grids` float grids (density, temperature, Le_scale) and `rgb_grids` RGB grids (a voxel's
+// RGB and its spectrum), with its majorant grids and, `blackbody`, its blackbody colour table.
+uint64_t grid_medium_memory_bytes(uint64_t voxels, int float_grids, int rgb_grids, bool blackbody);
+// A loaded scene at its camera resolution: film, meshes, environment, texture images and medium
+// grids.
 // `statistics`: the film keeps statistics whatever the scene says (--target-error asks for them);
 // adaptive sampling and the variance and spp layers are charged from the scene itself.
 uint64_t scene_memory_bytes(const Scene& scene, bool statistics = false);

@@ -322,6 +322,30 @@ std::vector<JsonCursor> JsonCursor::elements(size_t n, std::string_view what) co
     return elements();
 }
 
+size_t JsonCursor::array_size() const {
+    if (!value_->is_array()) fail_expected("an array");
+    return value_->size();
+}
+
+std::vector<float> JsonCursor::float_array(const Bounds& bounds) const {
+    const size_t n = array_size();
+    std::vector<float> out(n);
+    for (size_t i = 0; i < n; ++i) {
+        const nlohmann::ordered_json& v = (*value_)[i];
+        if (v.is_number()) {
+            const double d = v.get<double>();
+            const auto f = static_cast<float>(d);
+            if (std::abs(d) <= double(FLT_MAX) && bounds.contains(d) && bounds.contains(double(f))) {
+                out[i] = f;
+                continue;
+            }
+        }
+        // The element's own cursor says what is wrong, located at it.
+        out[i] = JsonCursor(*document_, v, pointer_ + "/" + std::to_string(i)).number_f(bounds);
+    }
+    return out;
+}
+
 // ---------------------------------------------------------------------------------------------
 // JsonCursor: scalars
 

@@ -123,6 +123,11 @@ class JsonCursor {
     std::vector<JsonCursor> elements() const;
     // Exactly n elements; else fails "expected <what>, got ...".
     std::vector<JsonCursor> elements(size_t n, std::string_view what) const;
+    // The number of elements; fails unless this is an array.
+    size_t array_size() const;
+    // An array of numbers as floats, each as number_f(bounds) reads it; fails at the first that
+    // is not. For arrays of millions (medium grids): no cursor is made per element.
+    std::vector<float> float_array(const Bounds& bounds) const;
 
     // --- scalars (all numbers finite)
     double number(const Bounds& bounds = {}) const;

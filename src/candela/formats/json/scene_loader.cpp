@@ -329,11 +329,11 @@ void warn_if_unlit(Scene& scene) {
             .formatted());
 }
 
-// pbrt-v4 warns the same way (cpu/render.cpp): only volpath scatters in media; the others render
-// the scene as if the media were vacuum.
+// pbrt-v4 warns the same way (cpu/render.cpp): only volpath (and bsdf, which is volpath without
+// light sampling there) scatter in media; the others render the scene as if the media were vacuum.
 void warn_if_media_ignored(Scene& scene) {
     const IntegratorType t = scene.integrator.type;
-    if (t == IntegratorType::kVolPath) return;
+    if (t == IntegratorType::kVolPath || t == IntegratorType::kBsdf) return;
     bool in_media = scene.camera_medium != kNoMedium;
     for (const Shape& shape : scene.shapes) in_media |= shape.interior != kNoMedium || shape.exterior != kNoMedium;
     if (!in_media) return;

@@ -18,7 +18,8 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 1> kMediumTypes = {"homogeneous"};
+constexpr std::array<std::string_view, 6> kMediumTypes = {"cloud", "homogeneous", "nanovdb", "openvdb", "rgbgrid",
+                                                         "uniformgrid"};
 
 // pbrt-v4's `homogeneous`: sigma_a and sigma_s (default 1 each, or a `preset`'s), `scale`, `g`,
 // and emission `Le` (default none) with `Le_scale`.
@@ -125,9 +126,11 @@ void read_media(JsonCursor media, Scene& scene, MemoryBudget& budget) {
         if (auto t = c.get("transform")) to_world = read_transform(*t);
         if (type == "homogeneous") {
             scene.media.push_back(read_homogeneous(c, scene));
+        } else if (type == "nanovdb" || type == "openvdb") {
+            scene.media.push_back(read_vdb_medium(type, c, scene, to_world, budget));
+        } else {
+            scene.media.push_back(read_bounded_medium(type, c, scene, to_world, budget));
         }
-        (void)budget;
-        (void)to_world;
         c.reject_unknown_keys();
         scene.medium_names.push_back(name);
     }

@@ -48,6 +48,14 @@ void load_texture_images(Scene& scene, const JsonDocument& document, MemoryBudge
 // `media`: name -> participating medium (media/medium.h), in file order; grids are charged to
 // `budget` before they are allocated.
 void read_media(JsonCursor media, Scene& scene, MemoryBudget& budget);
+// A medium of pbrt-v4's bounded kinds (scene_media_grids.cpp): `type` uniformgrid, rgbgrid or
+// cloud, placed by `to_world` (its `transform`); grids charged to `budget` before they are read.
+Medium read_bounded_medium(std::string_view type, JsonCursor& medium, const Scene& scene, const Transform& to_world,
+                           MemoryBudget& budget);
+// `nanovdb` (a .nvdb file, pbrt-v4's) and `openvdb` (a .vdb file): a grid medium of the file's
+// density grid and, when the file has one, its temperature grid (scene_media_vdb.cpp).
+Medium read_vdb_medium(std::string_view type, JsonCursor& medium, const Scene& scene, const Transform& to_world,
+                       MemoryBudget& budget);
 // The medium a camera or shape names: its index, or kNoMedium for "" (pbrt-v4's "no medium").
 uint32_t medium_index(const JsonCursor& c, const Scene& scene);
 // What every medium type reads alike (scene_media.cpp): a coefficient (a number, [r, g, b] or a
