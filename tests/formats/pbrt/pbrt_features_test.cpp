@@ -37,7 +37,7 @@ TEST(PbrtFeatures, EveryFeatureTranslates) {
     EXPECT_EQ(m["lacquer"]["type"], "coated_conductor");
     EXPECT_EQ(m["blend"]["type"], "blend");
     EXPECT_EQ(m["blend"]["materials"], nlohmann::ordered_json::array({"gold", "plastic"}));
-    EXPECT_EQ(m["air"]["alpha"], 0.0);
+    EXPECT_EQ(m["air"], nlohmann::ordered_json({{"type", "interface"}}));
     const auto& t = d["textures"];
     EXPECT_EQ(t["checks"]["filter"], "point");
     EXPECT_EQ(t["checks"]["uv_scale"], nlohmann::ordered_json::array({4.0, 4.0}));

@@ -26,6 +26,9 @@ struct GraphicsState {
     bool reverse_orientation = false;
     std::string material;  // the JSON name of the current material
     std::optional<AreaLight> area_light;
+    // MediumInterface "inside" "outside": the media on the two sides of the shapes that follow;
+    // the outside one is also the camera's (at Camera) and a light's. "" is no medium.
+    std::string inside_medium, outside_medium;
     // Attribute "shape" | "light" | "material" | "medium" | "texture": default parameters.
     std::map<std::string, ParameterList> attributes;
 };
@@ -60,6 +63,12 @@ class ImportContext {
     // A fresh mesh file name for the store ("meshes/NAME-N.ply").
     std::string new_mesh_name(const std::string& kind);
 
+    // Media defined so far (MakeNamedMedium), and where.
+    std::map<std::string, Location>& media() { return media_; }
+    bool has_medium(const std::string& name) const { return media_.count(name) > 0; }
+    // Whether a material of the document is pbrt-v4's "interface" (no surface, a boundary only).
+    bool is_interface(const std::string& material);
+
   private:
     ImportedScene& out_;
     std::filesystem::path folder_;
@@ -70,6 +79,7 @@ class ImportContext {
     std::set<std::string> materials_;
     std::map<std::string, std::string> named_;  // pbrt name -> JSON name
     size_t mesh_count_ = 0;
+    std::map<std::string, Location> media_;
 };
 
 // The parts of the translation, each in its own file.
@@ -78,9 +88,12 @@ class ImportContext {
 struct RenderOptions {
     std::optional<Params> camera, film, filter, sampler, integrator;
     Transform camera_from_world;
+    std::string camera_medium;  // the outside medium at Camera (pbrt-v4's CameraMedium)
     std::optional<unsigned long long> seed;  // Option "seed"
 };
-void translate_options(const RenderOptions& options, ImportContext& ctx);
+// Returns whether the integrator is to be volpath if the scene has media (pbrt-v4's default, and
+// those that render media the same); the importer decides once the file is read.
+bool translate_options(const RenderOptions& options, ImportContext& ctx);
 
 // pbrt_materials.cpp: a Texture directive into the document's textures; a Material or
 // MakeNamedMaterial into its materials (returns the JSON name).
@@ -95,9 +108,16 @@ std::string material_with_alpha(const std::string& name, const Json& alpha, Impo
 void translate_shape(const std::string& type, const Params& params, const GraphicsState& state, Json& shapes,
                      const std::string& shapes_pointer, ImportContext& ctx);
 
+// pbrt_media.cpp: a MakeNamedMedium into the document's media; `to_world` is the transformation
+// current at the directive.
+void translate_medium(const std::string& name, const Params& params, const Transform& to_world, ImportContext& ctx);
+
 // pbrt_lights.cpp: a LightSource into the document's lights.
 void translate_light(const std::string& type, const Params& params, const Transform& light_to_world,
                      ImportContext& ctx);
+
+// A JSON pointer's reference token for `name` (RFC 6901: ~ and / escaped).
+std::string pointer_token(const std::string& name);
 
 // A transform in candela's JSON syntax: [{"matrix": [16 numbers row by row]}], or [] for identity.
 Json transform_json(const Transform& t);

@@ -64,6 +64,18 @@ std::string ImportContext::new_mesh_name(const std::string& kind) {
     return fmt::format("meshes/{}-{}.ply", kind, ++mesh_count_);
 }
 
+std::string pointer_token(const std::string& name) {
+    std::string out;
+    for (char c : name) out += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+    return out;
+}
+
+bool ImportContext::is_interface(const std::string& material) {
+    const Json& materials = doc()["materials"];
+    auto it = materials.find(material);
+    return it != materials.end() && it->value("type", "") == "interface";
+}
+
 Json transform_json(const Transform& t) {
     if (t.is_identity()) return Json::array();
     Json m = Json::array();
@@ -105,13 +117,6 @@ struct ObjectDefinition {
     bool empty = false;  // no shape candela renders: its instances are left out
 };
 
-// A JSON pointer's reference token for `name` (RFC 6901: ~ and / escaped).
-std::string pointer_token(const std::string& name) {
-    std::string out;
-    for (char c : name) out += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
-    return out;
-}
-
 constexpr size_t kMaxAttributeDepth = 100000;
 
 class Importer final : public Target {
@@ -120,6 +125,7 @@ class Importer final : public Target {
         Json& d = ctx_.doc();
         d["integrator"] = Json::object();
         d["sampler"] = Json::object();
+        d["media"] = Json::object();
         d["camera"] = Json::object();
         d["film"] = Json::object();
         d["textures"] = Json::object();
@@ -217,6 +223,7 @@ class Importer final : public Target {
         before_world("Camera", at);
         options_.camera.emplace(std::move(params), fmt::format("Camera \"{}\"", type), at);
         options_.camera_from_world = state_.ctm;
+        options_.camera_medium = state_.outside_medium;
         named_frames_["camera"] = state_.ctm.inverse();
     }
     void film(const std::string& type, ParameterList params, const Location& at) override {
@@ -238,16 +245,28 @@ class Importer final : public Target {
     void accelerator(const std::string&, ParameterList, const Location& at) override {
         ctx_.warn(at, "Accelerator: candela always uses Embree's BVH; ignored");
     }
-    void make_named_medium(const std::string& name, ParameterList, const Location& at) override {
-        ctx_.warn(at, fmt::format("MakeNamedMedium \"{}\": participating media are not supported; ignored", name));
+    // pbrt-v4 allows both before and after WorldBegin; the medium lives in the space current here.
+    void make_named_medium(const std::string& name, ParameterList params, const Location& at) override {
+        if (name.empty()) fail(at, "MakeNamedMedium: the name \"\" is taken: it means no medium");
+        if (auto it = ctx_.media().find(name); it != ctx_.media().end())
+            fail(at, fmt::format("MakeNamedMedium: medium \"{}\" is defined twice (first at {})", name,
+                                 describe(it->second)));
+        merge_defaults(params, state_.attributes["medium"]);
+        Params p(std::move(params), fmt::format("MakeNamedMedium \"{}\"", name), at);
+        translate_medium(name, p, state_.ctm, ctx_);
+        ctx_.media().emplace(name, at);
+        finish(p);
     }
-    void medium_interface(const std::string&, const std::string&, const Location& at) override {
-        ctx_.warn(at, "MediumInterface: participating media are not supported; ignored");
+    // One name means the same medium on both sides (the parser passes it twice).
+    void medium_interface(const std::string& inside, const std::string& outside, const Location&) override {
+        state_.inside_medium = inside;
+        state_.outside_medium = outside;
     }
     void world_begin(const Location& at) override {
         if (in_world_) fail(at, "WorldBegin appears twice");
         in_world_ = true;
-        translate_options(options_, ctx_);
+        options_translated_ = true;
+        integrator_follows_media_ = translate_options(options_, ctx_);
         state_.ctm = Transform();
         named_frames_["world"] = Transform();
     }
@@ -292,6 +311,12 @@ class Importer final : public Target {
             ctx_.warn(at, "LightSource inside ObjectBegin: pbrt-v4 does not instance lights; ignored");
             return;
         }
+        // pbrt-v4 gives a light the outside medium and looks it up at once; the medium does not
+        // change what the light sends (transmittance is the rays' business), so candela's lights
+        // have none.
+        if (!state_.outside_medium.empty() && !ctx_.has_medium(state_.outside_medium))
+            fail(at, fmt::format("LightSource: medium \"{}\" is not defined (MakeNamedMedium must come first)",
+                                 state_.outside_medium));
         translate_light(type, p, state_.ctm, ctx_);
         finish(p);
     }
@@ -310,6 +335,9 @@ class Importer final : public Target {
         merge_defaults(params, state_.attributes["shape"]);
         Params p(std::move(params), fmt::format("Shape \"{}\"", type), at);
         ensure_material();
+        // pbrt-v4 looks the media up once the file is read: they may be defined after the shape.
+        for (const std::string* m : {&state_.inside_medium, &state_.outside_medium})
+            if (!m->empty()) medium_uses_.emplace_back(*m, at);
         if (object_) {
             GraphicsState s = state_;
             if (s.area_light) {
@@ -367,11 +395,15 @@ class Importer final : public Target {
         // pbrt-v4 stops on these too: a block left open is likely a missing line.
         if (object_) fail(object_->at, "ObjectBegin without a matching ObjectEnd");
         if (!stack_.empty()) fail(stack_.back().second, "AttributeBegin without a matching AttributeEnd");
-        if (!in_world_) {
+        if (!options_translated_) {
             // A file with no WorldBegin still has its options.
-            translate_options(options_, ctx_);
+            integrator_follows_media_ = translate_options(options_, ctx_);
         }
+        for (const auto& [name, at] : medium_uses_)
+            if (!ctx_.has_medium(name)) fail(at, fmt::format("Shape: medium \"{}\" is not defined", name));
+        finish_integrator();
         if (ctx_.doc()["objects"].empty()) ctx_.doc().erase("objects");
+        if (ctx_.doc()["media"].empty()) ctx_.doc().erase("media");
         ctx_.finish_warnings();
     }
     void warn(const Location& at, const std::string& message) override { ctx_.warn(at, message); }
@@ -400,12 +432,21 @@ class Importer final : public Target {
         }
         state_.material = default_material_;
     }
+    // pbrt-v4's default integrator is volpath, which candela's path equals where there are no
+    // media: volpath where the scene has media. (pbrt-v4's path ignores media and warns; the
+    // loader gives that warning, for any integrator but volpath.)
+    void finish_integrator() {
+        if (integrator_follows_media_ && !ctx_.doc()["media"].empty()) ctx_.doc()["integrator"]["type"] = "volpath";
+    }
     ImportContext ctx_;
     GraphicsState state_;
     std::vector<std::pair<GraphicsState, Location>> stack_;
     std::map<std::string, Transform> named_frames_;
     RenderOptions options_;
     bool in_world_ = false;
+    bool options_translated_ = false;
+    bool integrator_follows_media_ = false;
+    std::vector<std::pair<std::string, Location>> medium_uses_;  // media shapes name, and where
     bool ignore_transforms_ = false;
     std::string default_material_;
     std::map<std::string, ObjectDefinition> objects_;

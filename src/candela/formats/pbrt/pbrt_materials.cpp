@@ -269,11 +269,10 @@ std::string translate_material(const std::string& wanted_name, const std::string
         }
         Json amount = p.number_or_texture("amount", float_textures(ctx));
         m = Json{{"type", "blend"}, {"materials", names}, {"amount", amount.is_null() ? Json(0.5) : amount}};
-    } else if (type == "interface") {
-        // A boundary between media, invisible to light: rays pass through it.
-        m = Json{{"type", "diffuse"}, {"alpha", 0.0}};
-    } else if (type == "" || type == "none") {
-        m = Json{{"type", "diffuse"}, {"alpha", 0.0}};
+    } else if (type == "interface" || type == "" || type == "none") {
+        // pbrt-v4 makes no material of these three: a boundary between media only, which rays
+        // cross unchanged (and no surface to carry an area light).
+        m = Json{{"type", "interface"}};
     } else {
         // measured, hair, subsurface, diffusetransmission: a diffuse stand-in of their colour.
         Json r = p.colour("reflectance", colours);
@@ -283,7 +282,7 @@ std::string translate_material(const std::string& wanted_name, const std::string
         m = Json{{"type", "diffuse"}, {"albedo", r.is_null() ? Json(0.5) : r}};
     }
     p.string_or("type", "");
-    if (m["type"] != "blend") surface_keys(p, m, ctx);
+    if (m["type"] != "blend" && m["type"] != "interface") surface_keys(p, m, ctx);
     const std::string name = ctx.new_material_name(wanted_name);
     ctx.doc()["materials"][name] = m;
     ctx.origin("/materials/" + name, p.location());

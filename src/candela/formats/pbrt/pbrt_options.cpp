@@ -92,6 +92,14 @@ void translate_camera(const RenderOptions& o, int width, int height, Json& camer
         camera["height"] = width >= height ? 2.0 : 2.0 * double(height) / double(width);
     }
     write_camera_frame(o.camera_from_world, camera);
+    // pbrt-v4 looks the camera's medium up as the world begins.
+    if (!o.camera_medium.empty()) {
+        if (!ctx.has_medium(o.camera_medium))
+            fail(o.camera ? o.camera->location() : Location{},
+                 fmt::format("Camera: medium \"{}\" is not defined (MakeNamedMedium must come before WorldBegin)",
+                             o.camera_medium));
+        camera["medium"] = o.camera_medium;
+    }
     camera["resolution"] = Json::array({width, height});
 }
 
@@ -192,48 +200,64 @@ void translate_sampler(const RenderOptions& o, Json& sampler, ImportContext& ctx
     if (o.seed && !sampler.contains("seed")) sampler["seed"] = *o.seed;
 }
 
-void translate_integrator(const RenderOptions& o, Json& integrator, ImportContext& ctx) {
+// Returns whether the type follows the media (volpath if the scene has any).
+bool translate_integrator(const RenderOptions& o, Json& integrator, ImportContext& ctx) {
     long long max_depth = 5;
+    std::string type = "path";
+    bool follows_media = true;  // pbrt-v4's default integrator is volpath
     if (o.integrator) {
         const Params& p = *o.integrator;
         const std::string& d = p.directive();
-        const std::string type = directive_type(p);
-        if (type != "path" && type != "volpath")
-            ctx.warn(p.location(), fmt::format("{}: rendered with candela's path tracer (NEE + MIS), which converges to "
-                                               "the same image",
+        const std::string pbrt_type = directive_type(p);
+        follows_media = false;
+        if (pbrt_type == "volpath") {
+            type = "volpath";
+        } else if (pbrt_type == "simplevolpath") {
+            type = "volpath";
+            ctx.warn(p.location(), fmt::format("{}: rendered with candela's volpath (NEE + MIS through media), which "
+                                               "converges to the same image",
                                                d));
+        } else if (pbrt_type != "path") {
+            // bdpt and mlt render media as volpath does; the others as path.
+            follows_media = pbrt_type == "bdpt" || pbrt_type == "mlt";
+            ctx.warn(p.location(), fmt::format("{}: rendered with candela's {}, which converges to the same image", d,
+                                               follows_media ? "path tracer (volpath where the scene has media)"
+                                                             : "path tracer (NEE + MIS)"));
+        }
         max_depth = p.int_or("maxdepth", 5);
         if (max_depth < 0) p.fail(p.find("maxdepth"), "maxdepth must be >= 0");
         if (p.bool_or("regularize", false))
             ctx.warn(p.find("regularize")->location, "regularize is not supported; paths are not regularized");
         p.string_or("lightsampler", "bvh");  // candela chooses lights by power: the same image
     }
-    integrator["type"] = "path";
+    integrator["type"] = type;
     // pbrt-v4's maxdepth 0 renders emitters seen directly only; candela's max_depth counts the
     // same bounces but must be >= 1.
     if (max_depth == 0)
         ctx.warn(o.integrator->location(), "maxdepth 0 is rendered as maxdepth 1 (direct light included)");
     integrator["max_depth"] = std::max<long long>(1, max_depth);
-    integrator["rr_depth"] = 1;  // pbrt-v4's PathIntegrator: Russian roulette once depth > 1
+    integrator["rr_depth"] = 1;  // pbrt-v4's PathIntegrator and VolPathIntegrator: Russian roulette once depth > 1
     integrator["spectral"] = true;
+    return follows_media;
 }
 
 }  // namespace
 
-void translate_options(const RenderOptions& o, ImportContext& ctx) {
+bool translate_options(const RenderOptions& o, ImportContext& ctx) {
     Json& d = ctx.doc();
     int width = 1280, height = 720;
     translate_film(o, width, height, d["film"], ctx);
     translate_filter(o, d["film"], ctx);
     translate_camera(o, width, height, d["camera"], d["film"], ctx);
     translate_sampler(o, d["sampler"], ctx);
-    translate_integrator(o, d["integrator"], ctx);
+    const bool follows_media = translate_integrator(o, d["integrator"], ctx);
     for (const std::optional<Params>* p : {&o.camera, &o.film, &o.filter, &o.sampler, &o.integrator})
         if (*p) (*p)->report_unused([&](const Location& at, const std::string& m) { ctx.warn(at, m); });
     if (o.camera) ctx.origin("/camera", o.camera->location());
     if (o.film) ctx.origin("/film", o.film->location());
     if (o.sampler) ctx.origin("/sampler", o.sampler->location());
     if (o.integrator) ctx.origin("/integrator", o.integrator->location());
+    return follows_media;
 }
 
 }  // namespace candela::pbrt

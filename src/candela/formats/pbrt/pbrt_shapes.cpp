@@ -135,17 +135,29 @@ bool needs_sphere_frame(const std::string& material, ImportContext& ctx) {
            (m.contains("roughness") && m["roughness"].is_array());
 }
 
+// The media on the shape's two sides (MediumInterface). pbrt-v4 makes a shape whose two media are
+// the same no boundary at all (GeometricPrimitive only for a medium transition): a ray crossing it
+// keeps the medium it is in. So the keys are written only where the two differ.
+void add_media(const GraphicsState& state, Json& shape) {
+    if (state.inside_medium == state.outside_medium) return;
+    shape["interior"] = state.inside_medium;
+    shape["exterior"] = state.outside_medium;
+}
+
 // An instance of a sphere of radius r at the origin (an object shared by the spheres of the same
 // radius, material and orientation), placed by to_world after turning candela's sphere frame (pole
 // +y, u = 1/4 towards -z) into pbrt-v4's (pole +z, u = 1/4 towards +y): a rotation of 90 degrees
 // about x.
-Json sphere_instance(double r, const std::string& material, bool reversed, const Transform& to_world,
-                     ImportContext& ctx) {
-    const std::string name = fmt::format("sphere {} {}{}", r, material, reversed ? " reversed" : "");
+Json sphere_instance(double r, const std::string& material, bool reversed, const GraphicsState& state,
+                     const Transform& to_world, ImportContext& ctx) {
+    std::string name = fmt::format("sphere {} {}{}", r, material, reversed ? " reversed" : "");
+    const bool media = state.inside_medium != state.outside_medium;
+    if (media) name += fmt::format(" in \"{}\" out \"{}\"", state.inside_medium, state.outside_medium);
     Json& objects = ctx.doc()["objects"];
     if (!objects.contains(name)) {
         Json sphere{{"type", "sphere"}, {"center", Json::array({0.0, 0.0, 0.0})}, {"radius", r}, {"material", material}};
         if (reversed) sphere["reverse_orientation"] = true;
+        add_media(state, sphere);
         objects[name] = Json{{"shapes", Json::array({sphere})}};
     }
     const Transform frame = Transform::rotate(Vec3d(1, 0, 0), kPiD / 2);
@@ -155,6 +167,11 @@ Json sphere_instance(double r, const std::string& material, bool reversed, const
 // The area light of the graphics state on `shape`; `area` is asked for only when `power` needs it.
 void add_emission(const GraphicsState& state, Json& shape, const std::function<double()>& area, ImportContext& ctx) {
     if (!state.area_light) return;
+    if (ctx.is_interface(state.material)) {
+        // pbrt-v4 makes no light of a shape that has no material (scene.cpp, CreateLights).
+        ctx.warn(state.area_light->at, "AreaLightSource on a shape of material \"interface\": ignored, as in pbrt-v4");
+        return;
+    }
     Params l(state.area_light->params, "AreaLightSource \"diffuse\"", state.area_light->at);
     Json L = l.colour("L", [&](const Parameter& t) -> std::string {
         fail(t.location, "AreaLightSource: L cannot be a texture");
@@ -238,7 +255,7 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
                                                   : "sphere: an emitting or instanced ellipsoid is rendered as a "
                                                     "sphere of the same volume");
             } else {
-                shape = sphere_instance(r, state.material, reversed, ctm, ctx);
+                shape = sphere_instance(r, state.material, reversed, state, ctm, ctx);
                 shape.erase("material");
             }
         }
@@ -265,8 +282,13 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
     std::string material = state.material;
     if (p.has("alpha")) {
         Json alpha = p.number_or_texture("alpha", [&](const Parameter& t) { return ctx.texture_reference(t, true); });
-        if (!(alpha.is_number() && alpha.get<double>() >= 1))
-            material = material_with_alpha(material, alpha, ctx);
+        if (!(alpha.is_number() && alpha.get<double>() >= 1)) {
+            if (ctx.is_interface(material))
+                ctx.warn(p.find("alpha")->location, "alpha on a shape of material \"interface\" is not supported; "
+                                                    "ignored (the shape is a medium boundary everywhere)");
+            else
+                material = material_with_alpha(material, alpha, ctx);
+        }
     }
     if (shape["type"] == "instance") {
         if (material != state.material)
@@ -276,6 +298,7 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
         return;
     }
     shape["material"] = material;
+    add_media(state, shape);
     add_emission(state, shape, area, ctx);
     if (!shapes_pointer.empty()) ctx.origin(fmt::format("{}/{}", shapes_pointer, shapes.size()), p.location());
     shapes.push_back(std::move(shape));
