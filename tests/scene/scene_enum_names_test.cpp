@@ -8,7 +8,7 @@ namespace candela {
 namespace {
 
 TEST(EnumNames, IntegratorNamesRoundTrip) {
-    ASSERT_EQ(integrator_type_names().size(), 7u);
+    ASSERT_EQ(integrator_type_names().size(), 8u);
     for (std::string_view name : integrator_type_names()) {
         std::optional<IntegratorType> type = parse_integrator_type(name);
         ASSERT_TRUE(type) << name;
@@ -19,6 +19,7 @@ TEST(EnumNames, IntegratorNamesRoundTrip) {
     EXPECT_EQ(parse_integrator_type("whitted"), IntegratorType::kWhitted);
     EXPECT_EQ(parse_integrator_type("ao"), IntegratorType::kAo);
     EXPECT_EQ(parse_integrator_type("normals"), IntegratorType::kNormals);
+    EXPECT_EQ(parse_integrator_type("volpath"), IntegratorType::kVolPath);
     EXPECT_EQ(integrator_type_name(IntegratorType::kDepth), "depth");
     EXPECT_EQ(integrator_type_name(IntegratorType::kAlbedo), "albedo");
 }
@@ -50,7 +51,7 @@ TEST(EnumNames, MetalNamesRoundTripInTheTablesOrder) {
 }
 
 TEST(EnumNames, UnknownNamesParseToNothing) {
-    EXPECT_FALSE(parse_integrator_type("volpath"));
+    EXPECT_FALSE(parse_integrator_type("bdpt"));
     EXPECT_FALSE(parse_integrator_type("AO"));  // names are case-sensitive
     EXPECT_FALSE(parse_filter_type(""));
     EXPECT_FALSE(parse_tonemap("filmic"));
