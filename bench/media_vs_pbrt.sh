@@ -6,8 +6,11 @@
 # (relMSE falls as 1/time for an unbiased estimator, so the ratio of efficiencies is the ratio of
 # times to any equal error). The reference's own noise adds the same floor to both.
 #
-#   bench/media_vs_pbrt.sh --pbrt PATH/pbrt [--spp N] [--ref-spp N] [--threads N] [--record]
-#                          [--no-build] [--build-dir DIR] [--work DIR] SCENE.pbrt...
+#   bench/media_vs_pbrt.sh --pbrt PATH/pbrt [--spp N] [--ref-spp N | --ref-dir DIR] [--threads N]
+#                          [--record] [--no-build] [--build-dir DIR] [--work DIR] SCENE.pbrt...
+#
+# --ref-dir DIR takes DIR/NAME.exr as the reference instead of rendering one (the pbrt-v4
+# references of tests/data/pbrt-media/refs/, 1024 spp at seed 0).
 #
 # pbrt-v4 is not a dependency of candela: build it as ../shared/refs/pbrt-v4/README.md says. Wall
 # times include loading the scene (small here). candela renders in spectral mode, as pbrt-v4 does.
@@ -15,13 +18,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 source bench/lib.sh
 
-pbrt="" spp=64 ref_spp=1024 threads=2 record=0 build=1 build_dir=build work_dir=""
+pbrt="" spp=64 ref_spp=1024 ref_dir="" threads=2 record=0 build=1 build_dir=build work_dir=""
 scenes=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --pbrt) pbrt="$2"; shift 2 ;;
     --spp) spp="$2"; shift 2 ;;
     --ref-spp) ref_spp="$2"; shift 2 ;;
+    --ref-dir) ref_dir="$2"; shift 2 ;;
     --threads) threads="$2"; shift 2 ;;
     --record) record=1; shift ;;
     --no-build) build=0; shift ;;
@@ -56,6 +60,7 @@ for scene in "${scenes[@]}"; do
   dir=$(cd "$(dirname "$scene")" && pwd)
   out="$(cd "$work_dir" && pwd)/$name"
   ref="$out-ref.pfm"
+  [ -n "$ref_dir" ] && ref="$(cd "$ref_dir" && pwd)/$name.exr"
   if [ ! -f "$ref" ]; then
     echo "media_vs_pbrt: $name: reference, pbrt-v4 at $ref_spp spp" >&2
     (cd "$dir" && "$pbrt" --nthreads "$threads" --spp "$ref_spp" --seed 100 --outfile "$ref" --quiet "$(basename "$scene")") \
@@ -75,7 +80,11 @@ if [ "$record" = 1 ]; then
     echo
     echo "### Media against pbrt-v4, commit $(commit_id), $(date -u +%Y-%m-%d), $(cpu_model), $threads threads"
     echo
-    echo "bench/media_vs_pbrt.sh --spp $spp --ref-spp $ref_spp (reference: pbrt-v4, seed 100)"
+    if [ -n "$ref_dir" ]; then
+      echo "bench/media_vs_pbrt.sh --spp $spp --ref-dir $ref_dir (references: pbrt-v4's, 1024 spp, seed 0)"
+    else
+      echo "bench/media_vs_pbrt.sh --spp $spp --ref-spp $ref_spp (reference: pbrt-v4, seed 100)"
+    fi
     echo
     echo "$table"
   } >>bench/RESULTS.md
