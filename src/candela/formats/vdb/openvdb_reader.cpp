@@ -9,8 +9,10 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
+#include <algorithm>
 #include <climits>
 #include <cmath>
+#include <fstream>
 #include <mutex>
 
 #include "candela/core/error.h"
@@ -67,6 +69,79 @@ std::string printable(std::string_view message) {
     return out;
 }
 
+// Checks that what libopenvdb reads before a tree fits in the file, since it takes a size from a
+// read that failed as if it had read it (a file cut inside its metadata made it allocate 14 GB):
+// the header, the file's metadata (count; per item a name, a type name and a value, each a u32
+// size and bytes), and the chain of grid descriptors (name, type, instance parent; the grid's,
+// its data blocks' and its end's offsets, the next descriptor starting at that end), with each
+// grid's own metadata at its offset (after a u32 of compression flags). Throws SceneError.
+class VdbPrecheck {
+  public:
+    VdbPrecheck(const std::filesystem::path& path, const std::string& file) : in_(path, std::ios::binary), file_(file) {
+        in_.seekg(0, std::ios::end);
+        size_ = in_ ? uint64_t(std::max<std::streamoff>(0, in_.tellg())) : 0;
+    }
+
+    void run() {
+        if (size_ < 8 || u64(0) != 0x56444220) return;  // not a VDB file: libopenvdb says so
+        const uint32_t version = u32(8);
+        if (version < 221) return;  // libopenvdb refuses these
+        const bool has_offsets = byte(20) != 0;
+        uint64_t at = 21 + (version < 222 ? 1 : 0) + 36;  // the header, with its UUID
+        at = meta_map(at);
+        if (!has_offsets) return;
+        const uint32_t grids = u32(at);
+        at += 4;
+        for (uint32_t g = 0; g < grids && g < (1u << 20); ++g) {
+            for (int s = 0; s < 3; ++s) at = string(at);  // name, type, instance parent
+            const uint64_t grid = u64(at), blocks = u64(at + 8), end = u64(at + 16);
+            if (!(grid >= at + 24 && grid <= blocks && blocks <= end && end <= size_))
+                fail(fmt::format("grid {} says it lies at bytes {} to {}, but the file has {} bytes", g, grid, end,
+                                 size_));
+            meta_map(grid + (version >= 222 ? 4 : 0));
+            at = end;
+        }
+    }
+
+  private:
+    [[noreturn]] void fail(const std::string& what) const {
+        throw SceneError(SourceLocation{file_, 0, 0, {}}, fmt::format("truncated or corrupt OpenVDB file: {}", what));
+    }
+    void need(uint64_t at, uint64_t count) const {
+        if (at > size_ || count > size_ - at)
+            fail(fmt::format("{} bytes at byte {} lie past its end ({} bytes)", count, at, size_));
+    }
+    template <class T>
+    T read(uint64_t at) {
+        need(at, sizeof(T));
+        T v{};
+        in_.clear();
+        in_.seekg(std::streamoff(at));
+        in_.read(reinterpret_cast<char*>(&v), sizeof(T));
+        if (!in_) fail(fmt::format("cannot read byte {}", at));
+        return v;
+    }
+    uint64_t u64(uint64_t at) { return read<uint64_t>(at); }
+    uint32_t u32(uint64_t at) { return read<uint32_t>(at); }
+    char byte(uint64_t at) { return read<char>(at); }
+    // A u32 size and that many bytes; returns where it ends.
+    uint64_t string(uint64_t at) {
+        const uint64_t n = u32(at);
+        need(at + 4, n);
+        return at + 4 + n;
+    }
+    uint64_t meta_map(uint64_t at) {
+        const uint32_t count = u32(at);
+        at += 4;
+        for (uint32_t i = 0; i < count; ++i) at = string(string(string(at)));  // name, type, value
+        return at;
+    }
+
+    std::ifstream in_;
+    std::string file_;
+    uint64_t size_ = 0;
+};
+
 // Runs `body` on the opened file, turning OpenVDB's exceptions into SceneErrors.
 template <class Body>
 auto with_file(const std::filesystem::path& path, Body&& body) {
@@ -74,6 +149,7 @@ auto with_file(const std::filesystem::path& path, Body&& body) {
     const std::string name = path.string();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) fail(name, "cannot open OpenVDB file: no such file");
+    VdbPrecheck(path, name).run();
     try {
         openvdb::io::File file(name);
         file.open(/*delayLoad=*/false);
