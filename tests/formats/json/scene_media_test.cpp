@@ -128,7 +128,7 @@ TEST(SceneLoaderMedia, BadValuesAreLocated) {
     expect_error(R"({"media": {"m": {"type": "homogeneous", "preset": "Apple", "sigma_a": 1}}})", "/media/m",
                  "give \"preset\" or \"sigma_a\", not both");
     expect_error(R"({"media": {"m": {"type": "fog"}}})", "/media/m/type",
-                 "unknown medium type \"fog\"; expected one of: cloud, homogeneous, rgbgrid, uniformgrid");
+                 "unknown medium type \"fog\"; expected one of: cloud, homogeneous, nanovdb, openvdb, rgbgrid, uniformgrid");
     expect_error(R"({"media": {"m": {"type": "homogeneous", "density": 1}}})", "/media/m",
                  "unknown key \"density\"; expected one of: Le, Le_scale, g, preset, scale, sigma_a, sigma_s, "
                  "transform, type");

@@ -3,6 +3,7 @@
 // Exact comparisons throughout: the images' floats and the written files' bytes.
 #include "candela/render/job/job.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -232,6 +233,32 @@ TEST(RenderJob, MemoryIsCheckedAtTheResolutionRendered) {
     o.overrides.resolution = Resolution{8, 8};
     o.overrides.spp = 1;
     EXPECT_EQ(run_render_job(o).images, std::vector<fs::path>{dir / "x.pfm"});
+}
+
+}  // namespace
+}  // namespace candela
+
+namespace candela {
+namespace {
+
+// --integrator that ignores the scene's media is warned about, as the scene loader warns about a
+// scene file's own integrator; volpath is not.
+TEST(RenderJob, AnIntegratorFlagThatIgnoresMediaIsWarnedAbout) {
+    const fs::path dir = fresh_dir("job_media_warning");
+    for (IntegratorType type : {IntegratorType::kPath, IntegratorType::kVolPath}) {
+        RenderJobOptions o = small_job(dir, "fog.exr", 1);
+        o.scene = fs::path(CANDELA_SOURCE_DIR) / "scenes/fog-room/scene.json";
+        o.overrides.integrator = type;
+        std::vector<std::string> warnings;
+        o.message = [&](JobMessage kind, const std::string& text) {
+            if (kind == JobMessage::kWarning) warnings.push_back(text);
+        };
+        run_render_job(o);
+        const bool warned = std::any_of(warnings.begin(), warnings.end(), [](const std::string& w) {
+            return w.find("--integrator path: the scene has participating media") != std::string::npos;
+        });
+        EXPECT_EQ(warned, type == IntegratorType::kPath);
+    }
 }
 
 }  // namespace

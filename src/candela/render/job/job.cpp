@@ -177,7 +177,11 @@ RenderJobResult run_on_this_rank(const RenderJobOptions& o, [[maybe_unused]] con
 #endif
         take_checkpoint_settings(*o.resume, resumed->identity, resumed->target_spp, scene, overrides);
     }
+    const size_t loader_warnings = scene.warnings.size();
     apply_and_check(o, overrides, limit, scene);
+    // What the overrides warn of (an --integrator that ignores the scene's media).
+    if (root)
+        for (size_t i = loader_warnings; i < scene.warnings.size(); ++i) o.message(JobMessage::kWarning, scene.warnings[i]);
     // Everything that must match for a checkpoint to continue this render.
     const RenderIdentity identity = render_identity(scene, scene_content_hash(scene));
 #if CANDELA_HAVE_MPI
