@@ -41,7 +41,7 @@ work_dir="${work_dir:-$build_dir/bench-work/media}"
 mkdir -p "$work_dir"
 if [ "$build" = 1 ]; then BUILD_DIR="$build_dir" scripts/build.sh candela_cli candela_relmse >/dev/null; fi
 candela="$build_dir/candela"
-relmse="$build_dir/bench/candela_relmse"
+relmse="$build_dir/candela_relmse"
 
 # Seconds a command takes, wall clock; its output goes to the log $1.
 timed() {
