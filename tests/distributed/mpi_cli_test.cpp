@@ -128,6 +128,21 @@ TEST(MpiRender, GivesTheBitsOfOneProcessForEveryRankAndThreadCount) {
     expect_same_images(dir, "tiles5", "one");
 }
 
+// Volpath in a scene with media (the fog room: fog around the camera, amber glass, a spot light):
+// its medium walks draw from generators seeded by the sampler, so ranks give one process's bits.
+TEST(MpiRender, GivesTheBitsOfOneProcessWithMedia) {
+    const fs::path dir = temp_dir("media");
+    const std::string fog = std::string(CANDELA_SOURCE_DIR) + "/scenes/fog-room/scene.json";
+    for (const char* mode : {"--rgb", "--spectral"}) {
+        const std::string one = std::string("one") + (mode[2] == 'r' ? "_rgb" : "_spectral");
+        const std::string two = std::string("two") + (mode[2] == 'r' ? "_rgb" : "_spectral");
+        ASSERT_EQ(run_alone(render_args(dir, one, "2", 2, {mode}, fog), dir / (one + ".log")).exit_code, 0);
+        const CliRun r = run_mpi(2, render_args(dir, two, "2", 1, {mode}, fog), dir / (two + ".log"));
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        expect_same_images(dir, two, one);
+    }
+}
+
 TEST(MpiRender, GivesTheBitsOfOneProcessWithAWeightedFilterAndACropWindow) {
     const fs::path dir = temp_dir("weighted");
     // The Cornell box with pbrt-v4's Mitchell filter (weighted samples: the film keeps weight
