@@ -31,21 +31,6 @@ std::string integrator_json(bool spectral) {
     return R"("integrator": {"type": "volpath", "max_depth": 1000, "spectral": )" + std::string(spectral ? "true" : "false") + "}";
 }
 
-test::ZTestFamily test_against(const test::RenderMoments& m, const std::array<double, 3>& expected, int block) {
-    const long blocks = long(m.width / block) * long(m.height / block);
-    test::ZTestFamily family(test::sidak_critical_z(test::kRenderTestAlpha, 3 * (blocks + 1)));
-    for (int c = 0; c < 3; ++c) {
-        for (int y = 0; y + block <= m.height; y += block)
-            for (int x = 0; x + block <= m.width; x += block) {
-                const test::BlockEstimate b = test::block_estimate(m, x, y, block, c);
-                family.add(b.mean - expected[size_t(c)], b.variance, x, y, c);
-            }
-        const test::BlockEstimate whole = test::block_estimate(m, 0, 0, m.width, c);
-        family.add(whole.mean - expected[size_t(c)], whole.variance, -1, -1, c);
-    }
-    return family;
-}
-
 std::array<double, 3> grey(double v) { return {v, v, v}; }
 
 // The column's samples in z (3 x 3 in x and y, the same in each: the camera's patch lies between
@@ -105,13 +90,13 @@ TEST(VolPathGrids, BeerLambertThroughADensityRamp) {
     for (bool spectral : {false, true}) {
         SCOPED_TRACE(spectral ? "spectral" : "rgb");
         const test::RenderMoments m = test::render_moments(scene_of(beer_lambert_grid_scene(spectral)));
-        const test::ZTestFamily family = test_against(m, grey(expected), 4);
+        const test::ZTestFamily family = test::test_against(m, grey(expected), 4);
         EXPECT_TRUE(family.passed()) << family.summary();
         // Controls: the density taken as constant at its mean sample, and 3% off.
         const double flat_tau = 0.5 * 2.0 * (0.2 + 0.9 + 1.6 + 0.4) / 4;
-        const test::ZTestFamily flat = test_against(m, grey(0.5 / M_PI * std::exp(-2.0 * flat_tau)), 4);
+        const test::ZTestFamily flat = test::test_against(m, grey(0.5 / M_PI * std::exp(-2.0 * flat_tau)), 4);
         EXPECT_FALSE(flat.passed()) << flat.summary();
-        const test::ZTestFamily off = test_against(m, grey(1.03 * expected), 4);
+        const test::ZTestFamily off = test::test_against(m, grey(1.03 * expected), 4);
         EXPECT_FALSE(off.passed()) << off.summary();
     }
 }
@@ -143,12 +128,12 @@ TEST(VolPathGrids, EmissionOfAGridSlabWithAnLeScaleGrid) {
     for (bool spectral : {false, true}) {
         SCOPED_TRACE(spectral ? "spectral" : "rgb");
         const test::RenderMoments m = test::render_moments(scene_of(emitting_grid_scene(spectral)));
-        const test::ZTestFamily family = test_against(m, grey(L), 4);
+        const test::ZTestFamily family = test::test_against(m, grey(L), 4);
         EXPECT_TRUE(family.passed()) << family.summary();
         // Control: emission not weighted by the density (sigma_a alone).
         double wrong = 0.0;
         for (int i = 0; i < n; ++i) wrong += sigma_a * column(kLeScale, (i + 0.5) / n) * 2.0 / n;
-        const test::ZTestFamily off = test_against(m, grey(wrong), 4);
+        const test::ZTestFamily off = test::test_against(m, grey(wrong), 4);
         EXPECT_FALSE(off.passed()) << off.summary();
     }
 }
@@ -177,9 +162,9 @@ TEST(VolPathGrids, AlbedoOneBoundedMediaAreInvisibleInAWhiteFurnace) {
         for (bool spectral : {false, true}) {
             SCOPED_TRACE(medium + (spectral ? " spectral" : " rgb"));
             const test::RenderMoments m = test::render_moments(scene_of(furnace_scene(medium, spectral)));
-            const test::ZTestFamily family = test_against(m, grey(1.0), 4);
+            const test::ZTestFamily family = test::test_against(m, grey(1.0), 4);
             EXPECT_TRUE(family.passed()) << family.summary();
-            const test::ZTestFamily off = test_against(m, grey(1.03), 4);
+            const test::ZTestFamily off = test::test_against(m, grey(1.03), 4);
             EXPECT_FALSE(off.passed()) << off.summary();
         }
 }
@@ -204,9 +189,9 @@ TEST(VolPathGrids, AlbedoOneNanoVdbMediaAreInvisibleInAWhiteFurnace) {
         for (bool spectral : {false, true}) {
             SCOPED_TRACE(std::string(name) + (spectral ? " spectral" : " rgb"));
             const test::RenderMoments m = test::render_moments(scene_of(furnace_scene(medium, spectral)));
-            const test::ZTestFamily family = test_against(m, grey(1.0), 4);
+            const test::ZTestFamily family = test::test_against(m, grey(1.0), 4);
             EXPECT_TRUE(family.passed()) << family.summary();
-            const test::ZTestFamily off = test_against(m, grey(1.03), 4);
+            const test::ZTestFamily off = test::test_against(m, grey(1.03), 4);
             EXPECT_FALSE(off.passed()) << off.summary();
         }
     }

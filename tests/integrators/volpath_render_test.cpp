@@ -34,22 +34,6 @@ std::string integrator_json(bool spectral, bool mis, int max_depth = 1000) {
            R"(, "mis": )" + (mis ? "true" : "false") + R"(, "spectral": )" + (spectral ? "true" : "false") + "}";
 }
 
-// z-tests of every block-channel and of the whole image against expected[c], Sidak-corrected.
-test::ZTestFamily test_against(const test::RenderMoments& m, const std::array<double, 3>& expected, int block) {
-    const long blocks = long(m.width / block) * long(m.height / block);
-    test::ZTestFamily family(test::sidak_critical_z(test::kRenderTestAlpha, 3 * (blocks + 1)));
-    for (int c = 0; c < 3; ++c) {
-        for (int y = 0; y + block <= m.height; y += block)
-            for (int x = 0; x + block <= m.width; x += block) {
-                const test::BlockEstimate b = test::block_estimate(m, x, y, block, c);
-                family.add(b.mean - expected[size_t(c)], b.variance, x, y, c);
-            }
-        const test::BlockEstimate whole = test::block_estimate(m, 0, 0, m.width, c);
-        family.add(whole.mean - expected[size_t(c)], whole.variance, -1, -1, c);
-    }
-    return family;
-}
-
 std::array<double, 3> scaled(std::array<double, 3> v, double s) {
     for (double& x : v) x *= s;
     return v;
@@ -77,21 +61,21 @@ TEST(VolPath, BeerLambertSlabRgb) {
     const test::RenderMoments m = test::render_moments(scene_of(beer_lambert_scene("[0.2, 0.5, 1.0]", false)));
     const double k = 0.5 / M_PI;
     const std::array<double, 3> expected = {k * std::exp(-0.4), k * std::exp(-1.0), k * std::exp(-2.0)};
-    const test::ZTestFamily family = test_against(m, expected, 4);
+    const test::ZTestFamily family = test::test_against(m, expected, 4);
     EXPECT_TRUE(family.passed()) << family.summary();
     // Control: the slab crossed once instead of twice is far outside the noise.
-    const test::ZTestFamily once = test_against(m, {k * std::exp(-0.2), k * std::exp(-0.5), k * std::exp(-1.0)}, 4);
+    const test::ZTestFamily once = test::test_against(m, {k * std::exp(-0.2), k * std::exp(-0.5), k * std::exp(-1.0)}, 4);
     EXPECT_FALSE(once.passed()) << once.summary();
-    const test::ZTestFamily off = test_against(m, scaled(expected, 1.03), 4);
+    const test::ZTestFamily off = test::test_against(m, scaled(expected, 1.03), 4);
     EXPECT_FALSE(off.passed()) << off.summary();
 }
 
 TEST(VolPath, BeerLambertSlabSpectral) {
     const test::RenderMoments m = test::render_moments(scene_of(beer_lambert_scene("0.5", true)));
     const double v = 0.5 / M_PI * std::exp(-1.0);
-    const test::ZTestFamily family = test_against(m, {v, v, v}, 4);
+    const test::ZTestFamily family = test::test_against(m, {v, v, v}, 4);
     EXPECT_TRUE(family.passed()) << family.summary();
-    const test::ZTestFamily off = test_against(m, {1.03 * v, 1.03 * v, 1.03 * v}, 4);
+    const test::ZTestFamily off = test::test_against(m, {1.03 * v, 1.03 * v, 1.03 * v}, 4);
     EXPECT_FALSE(off.passed()) << off.summary();
 }
 
@@ -114,12 +98,12 @@ TEST(VolPath, EmissionOfThinAndThickSlabs) {
             SCOPED_TRACE(fmt::format("sigma_a {} spectral {}", sigma_a, spectral));
             const test::RenderMoments m = test::render_moments(scene_of(emitting_slab_scene(sigma_a, spectral)));
             const double v = 1.0 - std::exp(-sigma_a);
-            const test::ZTestFamily family = test_against(m, {v, v, v}, 4);
+            const test::ZTestFamily family = test::test_against(m, {v, v, v}, 4);
             EXPECT_TRUE(family.passed()) << family.summary();
             // Control: the thin slab's emission without its self-absorption (Le sigma_a d), the
             // thick one's 2% low.
             const double wrong = sigma_a < 1.0 ? sigma_a : 0.98 * v;
-            const test::ZTestFamily off = test_against(m, {wrong, wrong, wrong}, 4);
+            const test::ZTestFamily off = test::test_against(m, {wrong, wrong, wrong}, 4);
             EXPECT_FALSE(off.passed()) << off.summary();
         }
     }
@@ -147,9 +131,9 @@ TEST(VolPath, AlbedoOneMediumIsInvisibleInAWhiteFurnace) {
                 SCOPED_TRACE(fmt::format("spectral {} mis {} camera inside {}", spectral, mis, inside));
                 const test::RenderMoments m = test::render_moments(scene_of(furnace_scene(spectral, mis, inside)));
                 EXPECT_EQ(m.dropped, 0u);
-                const test::ZTestFamily family = test_against(m, {1.0, 1.0, 1.0}, 4);
+                const test::ZTestFamily family = test::test_against(m, {1.0, 1.0, 1.0}, 4);
                 EXPECT_TRUE(family.passed()) << family.summary();
-                const test::ZTestFamily off = test_against(m, {1.03, 1.03, 1.03}, 4);
+                const test::ZTestFamily off = test::test_against(m, {1.03, 1.03, 1.03}, 4);
                 EXPECT_FALSE(off.passed()) << off.summary();
             }
 }

@@ -48,6 +48,20 @@ TEST_P(Determinism, SameImageForAnyThreadCountAndTileSize) {
     EXPECT_FALSE(bit_identical(one, other));
 }
 
+// Renders `scene` with one thread, two threads, and small tiles; expects the same bits from all
+// three and an image that is not black (a black image is trivially identical). Returns it.
+Image expect_same_image_for_any_threads_and_tiles(const Scene& scene) {
+    Image one = render(scene, {.threads = 1, .tile_size = 16}).image;
+    const Image two = render(scene, {.threads = 2, .tile_size = 16}).image;
+    const Image small_tiles = render(scene, {.threads = 2, .tile_size = 5}).image;
+    float brightest = 0.0f;
+    for (const Rgb& p : one.pixels) brightest = std::max(brightest, p.max_component());
+    EXPECT_GT(brightest, 0.0f);
+    EXPECT_TRUE(bit_identical(one, two));
+    EXPECT_TRUE(bit_identical(one, small_tiles));
+    return one;
+}
+
 // Spectral mode: the wavelengths come from the sampler's own numbers, so the image is still a
 // function of the scene, sampler, spp and seed; and it is not the RGB mode's image.
 TEST(DeterminismSpectral, SameImageForAnyThreadCountAndTileSize) {
@@ -56,14 +70,7 @@ TEST(DeterminismSpectral, SameImageForAnyThreadCountAndTileSize) {
         Scene scene = test::lit_small_box_scene(37, 23, 8);
         scene.integrator.type = type;
         scene.integrator.spectral = true;
-        Image one = render(scene, {.threads = 1, .tile_size = 16}).image;
-        Image two = render(scene, {.threads = 2, .tile_size = 16}).image;
-        Image small_tiles = render(scene, {.threads = 2, .tile_size = 5}).image;
-        float brightest = 0.0f;
-        for (const Rgb& p : one.pixels) brightest = std::max(brightest, p.max_component());
-        EXPECT_GT(brightest, 0.0f);
-        EXPECT_TRUE(bit_identical(one, two));
-        EXPECT_TRUE(bit_identical(one, small_tiles));
+        const Image one = expect_same_image_for_any_threads_and_tiles(scene);
         scene.integrator.spectral = false;
         EXPECT_FALSE(bit_identical(one, render(scene, {.threads = 2, .tile_size = 16}).image));
     }
@@ -76,14 +83,7 @@ TEST(DeterminismMedia, SameImageForAnyThreadCountAndTileSize) {
         SCOPED_TRACE(spectral ? "spectral" : "rgb");
         Scene scene = test::media_small_box_scene(37, 23, 8);
         scene.integrator.spectral = spectral;
-        Image one = render(scene, {.threads = 1, .tile_size = 16}).image;
-        Image two = render(scene, {.threads = 2, .tile_size = 16}).image;
-        Image small_tiles = render(scene, {.threads = 2, .tile_size = 5}).image;
-        float brightest = 0.0f;
-        for (const Rgb& p : one.pixels) brightest = std::max(brightest, p.max_component());
-        EXPECT_GT(brightest, 0.0f);
-        EXPECT_TRUE(bit_identical(one, two));
-        EXPECT_TRUE(bit_identical(one, small_tiles));
+        const Image one = expect_same_image_for_any_threads_and_tiles(scene);
         scene.sampler.seed += 1;
         EXPECT_FALSE(bit_identical(one, render(scene, {.threads = 2, .tile_size = 16}).image));
     }

@@ -273,6 +273,23 @@ inline ZTestFamily compare_blocks_and_whole(const RenderMoments& a, const Render
     return family;
 }
 
+// z-tests of every block-channel and of the whole (square) image against the constant colour
+// `expected`, in one family Sidak-corrected at kRenderTestAlpha (closed-form render tests).
+inline ZTestFamily test_against(const RenderMoments& m, const std::array<double, 3>& expected, int block) {
+    const long blocks = long(m.width / block) * long(m.height / block);
+    ZTestFamily family(sidak_critical_z(kRenderTestAlpha, 3 * (blocks + 1)));
+    for (int c = 0; c < 3; ++c) {
+        for (int y = 0; y + block <= m.height; y += block)
+            for (int x = 0; x + block <= m.width; x += block) {
+                const BlockEstimate b = block_estimate(m, x, y, block, c);
+                family.add(b.mean - expected[size_t(c)], b.variance, x, y, c);
+            }
+        const BlockEstimate whole = block_estimate(m, 0, 0, m.width, c);
+        family.add(whole.mean - expected[size_t(c)], whole.variance, -1, -1, c);
+    }
+    return family;
+}
+
 // The number of block-channels of `m` with a nonzero mean (the ones a scaled copy changes).
 inline long lit_blocks(const RenderMoments& m, int block) {
     long lit = 0;

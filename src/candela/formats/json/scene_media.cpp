@@ -79,6 +79,24 @@ float read_medium_scale(JsonCursor& c) {
     return v ? v->number_f(Bounds::at_least(0)) : 1.0f;
 }
 
+void read_medium_coefficients(JsonCursor& c, const Scene& scene, MediumSpectrum& sigma_a, MediumSpectrum& sigma_s,
+                              bool scalable) {
+    sigma_a = medium_coefficient(Rgb(1.0f));
+    sigma_s = medium_coefficient(Rgb(1.0f));
+    if (auto v = c.get("sigma_a")) sigma_a = read_medium_coefficient(*v, scene);
+    if (auto v = c.get("sigma_s")) sigma_s = read_medium_coefficient(*v, scene);
+    if (!scalable) return;
+    const float scale = read_medium_scale(c);
+    sigma_a = scaled(sigma_a, scale);
+    sigma_s = scaled(sigma_s, scale);
+}
+
+void read_temperature_mapping(JsonCursor& c, float& offset, float& scale) {
+    std::optional<JsonCursor> cutoff = c.get("temperature_cutoff"), given = c.get("temperature_offset");
+    offset = given ? given->number_f() : (cutoff ? cutoff->number_f() : 0.0f);
+    if (auto s = c.get("temperature_scale")) scale = s->number_f();
+}
+
 float read_medium_g(JsonCursor& c) {
     std::optional<JsonCursor> v = c.get("g");
     // pbrt-v4 clamps |g| to 0.99 where it evaluates the phase function; beyond 1 it is no

@@ -101,13 +101,7 @@ GridMedium read_uniform_grid(JsonCursor& c, const Scene& scene, const Transform&
            "uniformgrid");
 
     m.density = cell_centred_field(read_float_grid(density, size), m.box.bounds);
-    m.sigma_a = medium_coefficient(Rgb(1.0f));
-    m.sigma_s = medium_coefficient(Rgb(1.0f));
-    if (auto v = c.get("sigma_a")) m.sigma_a = read_medium_coefficient(*v, scene);
-    if (auto v = c.get("sigma_s")) m.sigma_s = read_medium_coefficient(*v, scene);
-    const float scale = read_medium_scale(c);
-    m.sigma_a = scaled(m.sigma_a, scale);
-    m.sigma_s = scaled(m.sigma_s, scale);
+    read_medium_coefficients(c, scene, m.sigma_a, m.sigma_s);
     m.g = read_medium_g(c);
 
     // Emission: a temperature grid or Le (normalized, times a number Le_scale, by
@@ -118,10 +112,7 @@ GridMedium read_uniform_grid(JsonCursor& c, const Scene& scene, const Transform&
     float number_scale = 1.0f;
     if (temperature) {
         m.temperature = cell_centred_field(read_float_grid(*temperature, size), m.box.bounds);
-        // pbrt-v4: temperatureoffset, defaulting to temperaturecutoff, defaulting to 0.
-        std::optional<JsonCursor> cutoff = c.get("temperature_cutoff"), offset = c.get("temperature_offset");
-        m.temperature_offset = offset ? offset->number_f() : (cutoff ? cutoff->number_f() : 0.0f);
-        if (auto s = c.get("temperature_scale")) m.temperature_scale = s->number_f();
+        read_temperature_mapping(c, m.temperature_offset, m.temperature_scale);
         if (Le_scale && !Le_scale_grid) number_scale = Le_scale->number_f(Bounds::at_least(0));
     } else if (std::optional<MediumSpectrum> Le = read_medium_emission(c, scene)) {
         m.Le = *Le;
@@ -163,10 +154,7 @@ RgbGridMedium read_rgb_grid_medium(JsonCursor& c, const Transform& to_world, Mem
 CloudMedium read_cloud(JsonCursor& c, const Scene& scene, const Transform& to_world) {
     CloudMedium m;
     m.box = read_box(c, to_world);
-    m.sigma_a = medium_coefficient(Rgb(1.0f));
-    m.sigma_s = medium_coefficient(Rgb(1.0f));
-    if (auto v = c.get("sigma_a")) m.sigma_a = read_medium_coefficient(*v, scene);
-    if (auto v = c.get("sigma_s")) m.sigma_s = read_medium_coefficient(*v, scene);
+    read_medium_coefficients(c, scene, m.sigma_a, m.sigma_s, /*scalable=*/false);
     if (auto v = c.get("density")) m.density = v->number_f(Bounds::at_least(0));
     if (auto v = c.get("wispiness")) m.wispiness = v->number_f(Bounds::at_least(0));
     if (auto v = c.get("frequency")) m.frequency = v->number_f(Bounds::at_least(0));

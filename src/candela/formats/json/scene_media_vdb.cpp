@@ -98,19 +98,11 @@ Medium read_vdb_medium(std::string_view type, JsonCursor& c, const Scene& scene,
     for (int i = 0; i < 3; ++i)
         if (!(m.box.bounds.hi[i] > m.box.bounds.lo[i]))
             file_key.fail(fmt::format("grid \"{}\" is flat in {}: it encloses no volume", density_name, "xyz"[i]));
-    m.sigma_a = medium_coefficient(Rgb(1.0f));
-    m.sigma_s = medium_coefficient(Rgb(1.0f));
-    if (auto v = c.get("sigma_a")) m.sigma_a = read_medium_coefficient(*v, scene);
-    if (auto v = c.get("sigma_s")) m.sigma_s = read_medium_coefficient(*v, scene);
-    const float scale = read_medium_scale(c);
-    m.sigma_a = scaled(m.sigma_a, scale);
-    m.sigma_s = scaled(m.sigma_s, scale);
+    read_medium_coefficients(c, scene, m.sigma_a, m.sigma_s);
     m.g = read_medium_g(c);
     // pbrt-v4's NanoVDBMedium: Le = Lescale (a number, the same everywhere) times the blackbody of
     // (temperature - offset) x scale; no Le spectrum.
-    std::optional<JsonCursor> cutoff = c.get("temperature_cutoff"), offset = c.get("temperature_offset");
-    m.temperature_offset = offset ? offset->number_f() : (cutoff ? cutoff->number_f() : 0.0f);
-    if (auto s = c.get("temperature_scale")) m.temperature_scale = s->number_f();
+    read_temperature_mapping(c, m.temperature_offset, m.temperature_scale);
     const float Le_scale = c.get("Le_scale") ? c.get("Le_scale")->number_f(Bounds::at_least(0)) : 1.0f;
     m.Le_scale = placed_field(1, 1, 1, {Le_scale}, AffineMap3f{}, Le_scale);
     if (m.temperature.empty()) m.Le_scale = GridField{};

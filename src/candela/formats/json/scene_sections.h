@@ -66,6 +66,13 @@ uint32_t medium_index(const JsonCursor& c, const Scene& scene);
 // spectra: medium_coefficient and medium_emission (media/medium_spectrum.h).
 MediumSpectrum read_medium_coefficient(const JsonCursor& c, const Scene& scene);
 float read_medium_scale(JsonCursor& medium);
+// `sigma_a` and `sigma_s` (default 1 each, as pbrt-v4's), both times `scale` when `scalable` (a
+// cloud takes no scale).
+void read_medium_coefficients(JsonCursor& medium, const Scene& scene, MediumSpectrum& sigma_a, MediumSpectrum& sigma_s,
+                              bool scalable = true);
+// A temperature grid's mapping to kelvin: `temperature_offset` (default `temperature_cutoff`, then 0,
+// as pbrt-v4's) and `temperature_scale` (default 1).
+void read_temperature_mapping(JsonCursor& medium, float& offset, float& scale);
 float read_medium_g(JsonCursor& medium);
 std::optional<MediumSpectrum> read_medium_emission(JsonCursor& medium, const Scene& scene);
 
