@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "app/child_process.h"
+#include "app/cli_run.h"
 #include "candela/render/job/checkpoint.h"
 #include "support/test_files.h"
 
@@ -31,16 +31,11 @@ fs::path temp_dir(const std::string& name) { return test::fresh_dir("interrupt_"
 
 using test::read_bytes;
 
-struct CliRun {
-    int exit_code;
-    std::string output;
-};
+using test::CliRun;
 
 // Runs candela to the end.
 CliRun run(const std::vector<std::string>& args, const fs::path& log) {
-    ChildProcess p(CANDELA_CLI, args, log);
-    int code = p.wait_exit(kTimeout);
-    return {code, p.output()};
+    return test::run_to_exit(CANDELA_CLI, args, log, kTimeout);
 }
 
 using Args = std::vector<std::string>;
@@ -132,7 +127,11 @@ TEST(Interrupt, SigtermSavesExitsWith143AndResumesBitIdentically) {
 
 TEST(Interrupt, TimeLimitSavesExitsWithZeroAndResumesBitIdentically) {
     const fs::path dir = temp_dir("time_limit");
-    CliRun r = run(cornell(dir, "stopped", kEndless, 2, {"--time-limit", "0.5"}), dir / "stopped.log");
+    CliRun r = test::run_stopped_after_a_pass(
+        [&](const std::string& limit) {
+            return run(cornell(dir, "stopped", kEndless, 2, {"--time-limit", limit}), dir / "stopped.log");
+        },
+        0.5);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("stopped at the time limit"), std::string::npos) << r.output;
     const uint32_t done = samples_done(r.output);
@@ -194,7 +193,11 @@ void expect_part_resume_is_bit_identical(const fs::path& dir, const fs::path& pa
 TEST(Interrupt, ShardStoppedAtTheTimeLimitResumesToTheUninterruptedPart) {
     const fs::path dir = temp_dir("shard_time_limit");
     const fs::path part = dir / "part-2.ckpt";
-    CliRun r = run(shard(part, kEndless, 2, {"--time-limit", "0.5"}), dir / "stopped.log");
+    CliRun r = test::run_stopped_after_a_pass(
+        [&](const std::string& limit) {
+            return run(shard(part, kEndless, 2, {"--time-limit", limit}), dir / "stopped.log");
+        },
+        0.5);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("stopped at the time limit"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("continue with --shard 2/3 --resume " + part.string() + " -o " + part.string()),
@@ -234,9 +237,13 @@ TEST(Interrupt, AdaptiveShardStoppedAtTheTimeLimitResumesToTheUninterruptedPart)
     const fs::path dir = temp_dir("adaptive_shard_time_limit");
     const fs::path part = dir / "part-1.ckpt";
     const Args adaptive = {"--noise-threshold", "0.003", "--min-spp", "4", "--aov", "spp"};
-    Args stopped = adaptive;
-    stopped.insert(stopped.end(), {"--time-limit", "0.5"});
-    CliRun r = run(shard(part, kEndless, 2, stopped, "1/3"), dir / "stopped.log");
+    CliRun r = test::run_stopped_after_a_pass(
+        [&](const std::string& limit) {
+            Args stopped = adaptive;
+            stopped.insert(stopped.end(), {"--time-limit", limit});
+            return run(shard(part, kEndless, 2, stopped, "1/3"), dir / "stopped.log");
+        },
+        0.5);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("stopped at the time limit"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(" min 4 max "), std::string::npos) << r.output;

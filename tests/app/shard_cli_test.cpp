@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "app/child_process.h"
+#include "app/cli_run.h"
 #include "support/run_command.h"
 #include "support/test_files.h"
 
@@ -29,16 +29,9 @@ fs::path temp_dir(const std::string& name) { return test::fresh_dir("shard_cli_"
 
 using test::read_bytes;
 
-struct CliRun {
-    int exit_code;
-    std::string output;
-};
+using test::CliRun;
 
-CliRun run(const Args& args, const fs::path& log) {
-    test::ChildProcess p(CANDELA_CLI, args, log);
-    const int code = p.wait_exit(60.0);
-    return {code, p.output()};
-}
+CliRun run(const Args& args, const fs::path& log) { return test::run_to_exit(CANDELA_CLI, args, log, 60.0); }
 
 // A small scene of its own: a diffuse sphere under a sky, through a Mitchell filter (a film with
 // weight sums) and the Reinhard tone map with a gamma transfer (the part files carry them).

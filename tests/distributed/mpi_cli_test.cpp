@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "app/child_process.h"
+#include "app/cli_run.h"
 #include "support/test_files.h"
 
 namespace candela {
@@ -55,10 +55,7 @@ fs::path temp_dir(const std::string& name) { return test::fresh_dir("mpi_" + nam
 
 using test::read_bytes;
 
-struct CliRun {
-    int exit_code;
-    std::string output;
-};
+using test::CliRun;
 
 Args mpirun_args(int ranks, const Args& candela_args) {
     Args args = {"--oversubscribe", "-np", std::to_string(ranks), CANDELA_CLI};
@@ -66,16 +63,10 @@ Args mpirun_args(int ranks, const Args& candela_args) {
     return args;
 }
 
-CliRun run_alone(const Args& args, const fs::path& log) {
-    ChildProcess p(CANDELA_CLI, args, log);
-    const int code = p.wait_exit(kTimeout);
-    return {code, p.output()};
-}
+CliRun run_alone(const Args& args, const fs::path& log) { return test::run_to_exit(CANDELA_CLI, args, log, kTimeout); }
 
 CliRun run_mpi(int ranks, const Args& args, const fs::path& log) {
-    ChildProcess p(CANDELA_MPIEXEC, mpirun_args(ranks, args), log);
-    const int code = p.wait_exit(kTimeout);
-    return {code, p.output()};
+    return test::run_to_exit(CANDELA_MPIEXEC, mpirun_args(ranks, args), log, kTimeout);
 }
 
 // The Cornell box (or `scene`), small, to NAME.exr and NAME.pfm in `dir`.
@@ -237,7 +228,11 @@ TEST(MpiRender, AdaptiveSamplingAndATargetErrorGiveTheBitsOfOneProcess) {
 TEST(MpiRender, AStopUnderMpiResumesInOneProcessAndTheOtherWayRound) {
     const fs::path dir = temp_dir("resume");
     // Stopped by the time limit on 3 ranks, resumed alone.
-    const CliRun stopped = run_mpi(3, render_args(dir, "a", kEndless, 1, {"--time-limit", "1"}), dir / "a.log");
+    const CliRun stopped = test::run_stopped_after_a_pass(
+        [&](const std::string& limit) {
+            return run_mpi(3, render_args(dir, "a", kEndless, 1, {"--time-limit", limit}), dir / "a.log");
+        },
+        1.0);
     ASSERT_EQ(stopped.exit_code, 0) << stopped.output;
     const uint32_t done = samples_done(stopped.output);
     ASSERT_GT(done, 0u) << stopped.output;
@@ -248,7 +243,11 @@ TEST(MpiRender, AStopUnderMpiResumesInOneProcessAndTheOtherWayRound) {
     expect_same_images(dir, "a_resumed", "a_whole");
 
     // Stopped alone, resumed on 2 ranks of 2 threads.
-    const CliRun alone = run_alone(render_args(dir, "b", kEndless, 1, {"--time-limit", "1"}), dir / "b.log");
+    const CliRun alone = test::run_stopped_after_a_pass(
+        [&](const std::string& limit) {
+            return run_alone(render_args(dir, "b", kEndless, 1, {"--time-limit", limit}), dir / "b.log");
+        },
+        1.0);
     ASSERT_EQ(alone.exit_code, 0) << alone.output;
     const uint32_t done_alone = samples_done(alone.output);
     ASSERT_GT(done_alone, 0u) << alone.output;
