@@ -12,6 +12,7 @@
 
 #include "candela/core/check.h"
 #include "candela/core/error.h"
+#include "candela/geometry/curve_hit.h"
 #include "candela/geometry/disk_intersection.h"
 #include "candela/geometry/ray_offset.h"
 #include "candela/geometry/sphere_intersection.h"
@@ -230,6 +231,13 @@ void cutout_disk_occluded(const RTCOccludedFunctionNArguments* args) {
     if (intersect_cutout_disk(*static_cast<const CutoutShape*>(args->geometryUserPtr), *r)) r->tfar = -kInfinity;
 }
 
+// The determinant of an instance's linear part: cbrt(|det|) is the mean scale of its curves' widths.
+double linear_determinant(const AffineMap& a) {
+    const auto m = [&](int i, int j) { return double(a.m[i][j]); };
+    return m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) - m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
+           m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
+}
+
 RTCRay to_embree(const Ray& ray) {
     RTCRay r;
     r.org_x = ray.o.x;
@@ -254,9 +262,13 @@ struct Accelerator::Impl {
     // set): one load from a hit to its data. The shapes of objects have entries too, found
     // through their instances; all instances share one more entry, with none set.
     struct Geometry {
-        const TriangleMesh* mesh = nullptr;
-        const Sphere* sphere = nullptr;
-        const Disk* disk = nullptr;
+        enum class Kind : uint8_t { kMesh, kSphere, kDisk, kCurves, kInstances };
+        const TriangleMesh* mesh = nullptr;  // set for meshes only: the hot path's one test
+        const void* user = nullptr;          // the Sphere, Disk or CurveSet of the other kinds
+        Kind kind = Kind::kInstances;
+        const Sphere* sphere() const { return kind == Kind::kSphere ? static_cast<const Sphere*>(user) : nullptr; }
+        const Disk* disk() const { return kind == Kind::kDisk ? static_cast<const Disk*>(user) : nullptr; }
+        const CurveSet* curves() const { return kind == Kind::kCurves ? static_cast<const CurveSet*>(user) : nullptr; }
         // A small mesh's winding normals, one per triangle (kMaxTrianglesWithNormalTable); empty
         // for larger meshes, whose hits normalize the cross product themselves.
         std::vector<Vec3f> face_normals;
@@ -294,10 +306,12 @@ struct Accelerator::Impl {
         const Geometry& g = geometries[id];
         if (g.mesh)
             attach_mesh(*g.mesh, target, embree_id, cutout);
-        else if (g.sphere)
-            attach_sphere(*g.sphere, target, embree_id, cutout);
+        else if (g.sphere())
+            attach_sphere(*g.sphere(), target, embree_id, cutout);
+        else if (g.disk())
+            attach_disk(*g.disk(), target, embree_id, cutout);
         else
-            attach_disk(*g.disk, target, embree_id, cutout);
+            attach_curves(*g.curves(), target, embree_id);
     }
 
     // Instance j: its object's scene placed by the transform, which Embree keeps in float.
@@ -361,6 +375,26 @@ struct Accelerator::Impl {
             rtcSetGeometryBoundsFunction(g, disk_bounds, nullptr);
             rtcSetGeometryIntersectFunction(g, disk_intersect);
             rtcSetGeometryOccludedFunction(g, disk_occluded);
+        }
+        commit_and_attach(g, target, id);
+    }
+
+    // Curves as Embree's cubic Bezier curves: ray-facing ribbons (flat and cylinder), or bands
+    // oriented by their normals (ribbon). Embree copies the points into its own buffers.
+    void attach_curves(const CurveSet& curves, RTCScene target, unsigned id) {
+        const bool ribbon = curves.type == CurveType::kRibbon;
+        RTCGeometry g = rtcNewGeometry(device, ribbon ? RTC_GEOMETRY_TYPE_NORMAL_ORIENTED_BEZIER_CURVE
+                                                      : RTC_GEOMETRY_TYPE_FLAT_BEZIER_CURVE);
+        auto* v = static_cast<CurvePoint*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                                                                   sizeof(CurvePoint), curves.points.size()));
+        std::copy(curves.points.begin(), curves.points.end(), v);
+        auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT,
+                                                                   sizeof(unsigned), curves.segment_count()));
+        std::copy(curves.segments.begin(), curves.segments.end(), idx);
+        if (ribbon) {
+            auto* n = static_cast<Vec3f*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3,
+                                                                  sizeof(Vec3f), curves.normals.size()));
+            std::copy(curves.normals.begin(), curves.normals.end(), n);
         }
         commit_and_attach(g, target, id);
     }
@@ -439,14 +473,27 @@ struct Accelerator::Impl {
         h.b = Vec2f(0.0f, 0.0f);
     }
 
-    // A hit on user geometry (a sphere or a disk) or through an instance, off the triangles' path.
+    // A hit on a curve (curve_hit.h): pbrt-v4's point, normal and (u, v).
+    static void make_curve_hit(const RTCRayHit& rh, const Ray& ray, const CurveSet& c, SurfaceHit& h) {
+        h.t = rh.ray.tfar;
+        h.shape_id = rh.hit.geomID;
+        h.prim_id = rh.hit.primID;
+        const CurveHit ch = curve_hit(c, rh.hit.primID, rh.hit.u, ray.o + ray.d * h.t, ray.d);
+        h.p = ch.p;
+        h.p_error = ch.p_error;
+        h.ng = ch.n;
+        h.ns = ch.n;
+        h.b = ch.uv;
+    }
+
+    // A hit on any other kind than a mesh, or through an instance, off the triangles' path.
     void make_user_hit(const RTCRayHit& rh, const Ray& ray, const Geometry& g, SurfaceHit& h) const {
-        if (g.sphere)
-            make_sphere_hit(rh, ray, *g.sphere, h);
-        else if (g.disk)
-            make_disk_hit(rh, ray, *g.disk, h);
-        else
-            make_instance_hit(rh, ray, h);
+        switch (g.kind) {
+            case Geometry::Kind::kSphere: make_sphere_hit(rh, ray, *g.sphere(), h); break;
+            case Geometry::Kind::kDisk: make_disk_hit(rh, ray, *g.disk(), h); break;
+            case Geometry::Kind::kCurves: make_curve_hit(rh, ray, *g.curves(), h); break;
+            default: make_instance_hit(rh, ray, h);
+        }
     }
 
     // A hit through an instance: made in object space as the shape's own hits are, then moved to
@@ -463,10 +510,12 @@ struct Accelerator::Impl {
             const AffineMap& m = instance.to_object;
             const Ray local{Vec3f(m.apply_point(Vec3d(ray.o))), Vec3f(m.apply_vector(Vec3d(ray.d))), ray.tmin,
                             ray.tmax};
-            if (shape.sphere)
-                make_sphere_hit(rh, local, *shape.sphere, h);
+            if (shape.sphere())
+                make_sphere_hit(rh, local, *shape.sphere(), h);
+            else if (shape.disk())
+                make_disk_hit(rh, local, *shape.disk(), h);
             else
-                make_disk_hit(rh, local, *shape.disk, h);
+                make_curve_hit(rh, local, *shape.curves(), h);
         }
         h.shape_id = id;
         h.instance = index;
@@ -481,7 +530,7 @@ struct Accelerator::Impl {
 
 Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
                          std::span<const Disk> disks, std::span<const Shape> shapes, AlphaCutouts cutouts,
-                         Instancing instancing)
+                         Instancing instancing, std::span<const CurveSet> curves)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.geometries.resize(shapes.size() + (instancing.instances.empty() ? 0 : 1));
@@ -498,7 +547,8 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
         // A disk shape given to the constructor without disks would read past the span.
         CANDELA_CHECK(index < (shapes[id].kind == ShapeKind::kMesh     ? meshes.size()
                                : shapes[id].kind == ShapeKind::kSphere ? spheres.size()
-                                                                       : disks.size()));
+                               : shapes[id].kind == ShapeKind::kDisk   ? disks.size()
+                                                                       : curves.size()));
         switch (shapes[id].kind) {
             case ShapeKind::kMesh: {
                 const TriangleMesh& mesh = meshes[index];
@@ -507,8 +557,18 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
                     m.geometries[id].face_normals = winding_normals(mesh);
                 break;
             }
-            case ShapeKind::kSphere: m.geometries[id].sphere = &spheres[index]; break;
-            case ShapeKind::kDisk: m.geometries[id].disk = &disks[index]; break;
+            case ShapeKind::kSphere:
+                m.geometries[id].user = &spheres[index];
+                m.geometries[id].kind = Impl::Geometry::Kind::kSphere;
+                break;
+            case ShapeKind::kDisk:
+                m.geometries[id].user = &disks[index];
+                m.geometries[id].kind = Impl::Geometry::Kind::kDisk;
+                break;
+            case ShapeKind::kCurves:
+                m.geometries[id].user = &curves[index];
+                m.geometries[id].kind = Impl::Geometry::Kind::kCurves;
+                break;
         }
     }
     m.device = rtcNewDevice(nullptr);
@@ -520,7 +580,9 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
         const Impl::Geometry& g = m.geometries[id];
         const FloatParam& alpha = cutouts.shape_alpha[id];
         CANDELA_CHECK(!alpha.is_textured() || cutouts.textures);
-        return &m.cutouts.emplace_back(CutoutShape{g.mesh, g.sphere, g.disk, alpha, cutouts.textures, id});
+        // The loaders refuse alpha on curves (Embree's curves would need a filter of their own).
+        CANDELA_CHECK(g.kind != Impl::Geometry::Kind::kCurves);
+        return &m.cutouts.emplace_back(CutoutShape{g.mesh, g.sphere(), g.disk(), alpha, cutouts.textures, id});
     };
     // Each object once, its shapes numbered from 0 in its own scene (compact ids: Embree sizes a
     // scene's geometry table by the largest); an object no instance places is left empty.
@@ -575,23 +637,36 @@ std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
 
 Vec2f Accelerator::uv(const SurfaceHit& hit) const {
     const Impl::Geometry& g = impl_->geometries[hit.shape_id];
-    if (g.sphere) return sphere_uv((impl_->shape_point(hit) - g.sphere->center) / g.sphere->radius);
-    if (g.disk) return disk_uv(*g.disk, impl_->shape_point(hit));
+    if (const Sphere* s = g.sphere()) return sphere_uv((impl_->shape_point(hit) - s->center) / s->radius);
+    if (const Disk* d = g.disk()) return disk_uv(*d, impl_->shape_point(hit));
+    if (g.curves()) return hit.b;
     return mesh_uv(*g.mesh, hit.prim_id, hit.b);
 }
 
 ShadingGeometry Accelerator::shading(const SurfaceHit& hit) const {
     const Impl::Geometry& g = impl_->geometries[hit.shape_id];
     const Instance* instance = impl_->in_object[hit.shape_id] ? &impl_->instances[hit.instance] : nullptr;
-    if (g.sphere) {
-        const Vec3d v = impl_->shape_point(hit) - g.sphere->center;
+    if (const Sphere* sphere = g.sphere()) {
+        const Vec3d v = impl_->shape_point(hit) - sphere->center;
         const Vec3d n = v / length(v);
-        const ShadingGeometry s = sphere_shading_geometry(n, g.sphere->radius, g.sphere->reverse_orientation);
-        return instance ? shading_to_world(*instance, s, Vec3f(g.sphere->reverse_orientation ? -n : n)) : s;
+        const ShadingGeometry s = sphere_shading_geometry(n, sphere->radius, sphere->reverse_orientation);
+        return instance ? shading_to_world(*instance, s, Vec3f(sphere->reverse_orientation ? -n : n)) : s;
     }
-    if (g.disk) {
-        const ShadingGeometry s = disk_shading_geometry(*g.disk, impl_->shape_point(hit));
-        return instance ? shading_to_world(*instance, s, Vec3f(g.disk->normal)) : s;
+    if (const Disk* disk = g.disk()) {
+        const ShadingGeometry s = disk_shading_geometry(*disk, impl_->shape_point(hit));
+        return instance ? shading_to_world(*instance, s, Vec3f(disk->normal)) : s;
+    }
+    if (const CurveSet* curves = g.curves()) {
+        // dpdu from the segment (moved to the world with its instance), dpdv across it, so that
+        // cross(dpdu, dpdv) is the hit's normal, as pbrt-v4's curves.
+        const CurvePoint* cp = &curves->points[curves->segments[hit.prim_id]];
+        Vec3f dpdu = bezier_derivative(cp, hit.b.x);
+        float width = 2 * bezier_radius(cp, hit.b.x);
+        if (instance) {
+            dpdu = Vec3f(instance->to_world.apply_vector(Vec3d(dpdu)));
+            width *= float(std::cbrt(std::fabs(linear_determinant(instance->to_world))));
+        }
+        return curve_shading_geometry(dpdu, hit.ng, width, hit.b);
     }
     const TriangleMesh& mesh = *g.mesh;
     const uint32_t* v = &mesh.indices[3 * size_t(hit.prim_id)];

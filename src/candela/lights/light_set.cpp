@@ -11,7 +11,9 @@ namespace {
 // The emitter of a shape's geometry.
 Emitter make_emitter(const Shape& shape, std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
                      std::span<const Disk> disks) {
-    // A disk shape given to the constructor without disks would read past the span.
+    // A disk shape given to the constructor without disks would read past the span. Curves do
+    // not emit (the loaders refuse it, as pbrt-v4 cannot sample them).
+    CANDELA_CHECK(shape.kind != ShapeKind::kCurves);
     CANDELA_CHECK(shape.index < (shape.kind == ShapeKind::kMesh     ? meshes.size()
                                  : shape.kind == ShapeKind::kSphere ? spheres.size()
                                                                     : disks.size()));
@@ -19,6 +21,7 @@ Emitter make_emitter(const Shape& shape, std::span<const TriangleMesh> meshes, s
         case ShapeKind::kMesh: return MeshEmitter(meshes[shape.index]);
         case ShapeKind::kSphere: return SphereEmitter{spheres[shape.index]};
         case ShapeKind::kDisk: return DiskEmitter(disks[shape.index]);
+        case ShapeKind::kCurves: break;
     }
     return SphereEmitter{};
 }

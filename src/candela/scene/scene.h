@@ -10,6 +10,7 @@
 
 #include "candela/camera/camera_settings.h"
 #include "candela/film/film_settings.h"
+#include "candela/geometry/curves.h"
 #include "candela/geometry/disk.h"
 #include "candela/geometry/instance.h"
 #include "candela/geometry/shape.h"
@@ -85,6 +86,7 @@ struct Scene {
     std::vector<TriangleMesh> meshes;
     std::vector<Sphere> spheres;
     std::vector<Disk> disks;
+    std::vector<CurveSet> curves;
     std::vector<Shape> shapes;  // in the world, except those of objects
     // Instancing (geometry/instance.h): each object a run of `shapes` in object space, without
     // emission; each instance an object placed by a transform. Empty in most scenes.

@@ -407,8 +407,10 @@ Scene load_scene_from_string(std::string_view json, const std::filesystem::path&
     if (auto c = root.get("textures")) read_textures(*c, scene);
     if (auto c = root.get("materials")) read_materials(*c, scene);
     std::vector<ObjectBounds> objects;
-    if (auto c = root.get("objects")) objects = read_objects(*c, folder, scene, budget, options.meshes);
-    if (auto c = root.get("shapes")) read_shapes(*c, ShapeSection{folder, std::nullopt, nullptr, objects, options.meshes}, scene, budget);
+    if (auto c = root.get("objects")) objects = read_objects(*c, folder, scene, budget, options.meshes, options.curves);
+    if (auto c = root.get("shapes"))
+        read_shapes(*c, ShapeSection{folder, std::nullopt, nullptr, objects, options.meshes, options.curves}, scene,
+                    budget);
     if (auto c = root.get("lights")) read_lights(*c, folder, scene, budget);
     load_texture_images(scene, document, budget);
     warn_if_unlit(scene);

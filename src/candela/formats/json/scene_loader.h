@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "candela/core/error.h"
+#include "candela/formats/curves/curve_file.h"
 #include "candela/formats/mesh/mesh_store.h"
 #include "candela/scene/memory_budget.h"
 #include "candela/scene/scene.h"
@@ -22,6 +23,8 @@ struct LoadOptions {
     std::optional<MemoryLimit> memory_limit;
     // Meshes by the `file` names the scene gives them, looked up before the disk (mesh_store.h).
     const MeshStore* meshes = nullptr;
+    // Curves likewise (formats/curves/curve_file.h).
+    const CurveStore* curves = nullptr;
     // For a scene translated from another file (a pbrt-v4 scene): where the element at a JSON
     // pointer came from, so that errors point into that file; nullopt for "unknown here".
     std::function<std::optional<SourceLocation>(const std::string& pointer)> source_map;

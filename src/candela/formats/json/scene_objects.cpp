@@ -51,11 +51,11 @@ void ObjectBounds::add(const Disk& disk) {
 }
 
 std::vector<ObjectBounds> read_objects(JsonCursor objects, const std::filesystem::path& folder, Scene& scene,
-                                       MemoryBudget& budget, const MeshStore* meshes) {
+                                       MemoryBudget& budget, const MeshStore* meshes, const CurveStore* curves) {
     std::vector<ObjectBounds> bounds;
     for (auto& [name, c] : objects.members()) {
         ObjectBounds& b = bounds.emplace_back();
-        ShapeSection section{folder, name, &b, {}, meshes};
+        ShapeSection section{folder, name, &b, {}, meshes, curves};
         ObjectShapes object{static_cast<uint32_t>(scene.shapes.size()), 0};
         read_shapes(c.require("shapes"), section, scene, budget);
         c.reject_unknown_keys();

@@ -14,6 +14,7 @@
 #include "candela/core/error.h"
 #include "candela/math/constants.h"
 #include "candela/math/transform.h"
+#include "candela/formats/curves/curve_file.h"
 #include "candela/formats/json/json_cursor.h"
 #include "candela/formats/mesh/mesh_store.h"
 #include "candela/scene/memory_budget.h"
@@ -111,17 +112,23 @@ struct ShapeSection {
     ObjectBounds* bounds = nullptr;          // the object's, while it is read
     std::span<const ObjectBounds> objects;   // every object's, for instances
     const MeshStore* meshes = nullptr;       // meshes by file name, found before the disk (mesh_store.h)
+    const CurveStore* curves = nullptr;      // curves by file name, likewise (curve_file.h)
 };
 
 // `shapes`: meshes (loaded relative to the section's folder, each charged to `budget` before it
 // is built), quads, spheres, disks and instances of objects; needs the materials and objects.
 void read_shapes(const JsonCursor& shapes, const ShapeSection& section, Scene& scene, MemoryBudget& budget);
 
+// A `curves` shape (scene_curves.cpp): `shape` has its material and media, `c` the rest.
+void read_curves(JsonCursor& c, const ShapeSection& section, Scene& scene, MemoryBudget& budget, Shape shape,
+                 bool reverse_orientation);
+
 // `objects`: name -> {"shapes": [...]}, each a run of shapes in object space that instances place
 // (geometry/instance.h); read after the materials and before `shapes`. Returns each object's
 // bounds, for the instances.
 std::vector<ObjectBounds> read_objects(JsonCursor objects, const std::filesystem::path& folder, Scene& scene,
-                                       MemoryBudget& budget, const MeshStore* meshes = nullptr);
+                                       MemoryBudget& budget, const MeshStore* meshes = nullptr,
+                                       const CurveStore* curves = nullptr);
 
 // An `instance` shape of `shapes`: `object` (a name) and `transform`.
 void read_instance(JsonCursor& c, const ShapeSection& section, Scene& scene, MemoryBudget& budget);

@@ -18,7 +18,7 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 5> kShapeTypes = {"mesh", "sphere", "quad", "disk", "instance"};
+constexpr std::array<std::string_view, 6> kShapeTypes = {"mesh", "sphere", "quad", "disk", "curves", "instance"};
 // |sin| of the angle between a quad's edges below which it has no usable area or normal.
 constexpr double kParallelSine = 1e-6;
 
@@ -209,6 +209,11 @@ void read_shape(JsonCursor c, const ShapeSection& section, Scene& scene, MemoryB
         scene.spheres.push_back(sphere);
         scene.shapes.push_back(shape);
         if (section.bounds) section.bounds->add(sphere);
+        return;
+    }
+
+    if (type == "curves") {
+        read_curves(c, section, scene, budget, shape, reverse_orientation);
         return;
     }
 

@@ -16,13 +16,14 @@ namespace {
 bool is_file_key(const std::string& key) { return key == "file" || key == "spectrum_file" || key == "normal_map"; }
 
 // Makes the document's file names relative to the output's folder instead of the input's
-// (meshes of the store keep their names: they are written beside the output).
-void rebase_file_names(nlohmann::ordered_json& node, const fs::path& from, const fs::path& to, const MeshStore& store) {
+// (meshes and curves of the stores keep their names: they are written beside the output).
+void rebase_file_names(nlohmann::ordered_json& node, const fs::path& from, const fs::path& to,
+                       const ImportedScene& store) {
     if (node.is_object()) {
         for (auto& [key, value] : node.items()) {
             if (value.is_string() && is_file_key(key)) {
                 const std::string name = value.get<std::string>();
-                if (store.count(name) || fs::path(name).is_absolute()) continue;
+                if (store.meshes.count(name) || store.curves.count(name) || fs::path(name).is_absolute()) continue;
                 const fs::path target = fs::weakly_canonical(fs::absolute(from / name));
                 value = target.lexically_relative(fs::weakly_canonical(fs::absolute(to))).generic_string();
             } else {
@@ -43,16 +44,17 @@ ConvertResult convert_pbrt_scene(const fs::path& in, const fs::path& out) {
     result.warnings = load_imported_scene(imported, in).warnings;
     const fs::path out_folder = out.parent_path().empty() ? fs::path(".") : out.parent_path();
     rebase_file_names(imported.document, in.parent_path().empty() ? fs::path(".") : in.parent_path(), out_folder,
-                      imported.meshes);
-    for (const auto& [name, mesh] : imported.meshes) {
-        const fs::path file = out_folder / name;
+                      imported);
+    const auto folder_for = [](const fs::path& file) {
         std::error_code ec;
         fs::create_directories(file.parent_path(), ec);
         if (ec)
             throw SceneError(SourceLocation{file.parent_path().string(), 0, 0, ""},
                              "cannot create the folder: " + ec.message());
-        write_ply(file, mesh);
-    }
+        return file;
+    };
+    for (const auto& [name, mesh] : imported.meshes) write_ply(folder_for(out_folder / name), mesh);
+    for (const auto& [name, curves] : imported.curves) write_curve_file(folder_for(out_folder / name), curves);
     write_contents_atomically(out, document_text(imported));
     result.mesh_files = imported.meshes.size();
     return result;

@@ -33,6 +33,16 @@ struct GraphicsState {
     std::map<std::string, ParameterList> attributes;
 };
 
+// The last `curves` shape the importer added, which the next curve joins when it is in the same
+// graphics state and no other shape came between (pbrt_curves.cpp).
+struct CurveRun {
+    const Json* shapes = nullptr;  // the shape list it is in
+    size_t index = 0;              // its index there
+    std::string key;               // the state it was made in: material, kind, media, ...
+    Transform ctm;                 // ... and transform
+    std::string file;              // its curve store entry
+};
+
 class ImportContext {
   public:
     ImportContext(ImportedScene& out, std::filesystem::path folder) : out_(out), folder_(std::move(folder)) {}
@@ -42,6 +52,8 @@ class ImportContext {
 
     Json& doc() { return out_.document; }
     MeshStore& meshes() { return out_.meshes; }
+    CurveStore& curves() { return out_.curves; }
+    CurveRun& curve_run() { return curve_run_; }
     // Remembers that the element at `pointer` comes from `at`.
     void origin(const std::string& pointer, const Location& at) { out_.origins.emplace_back(pointer, at); }
     // A warning at `at`. The same message (without its location) is reported once, with a count
@@ -62,6 +74,8 @@ class ImportContext {
 
     // A fresh mesh file name for the store ("meshes/NAME-N.ply").
     std::string new_mesh_name(const std::string& kind);
+    // A fresh curves file name for the store ("curves/curve-N.curves").
+    std::string new_curves_name() { return "curves/curve-" + std::to_string(++curves_count_) + ".curves"; }
 
     // Media defined so far (MakeNamedMedium), and where.
     std::map<std::string, Location>& media() { return media_; }
@@ -79,6 +93,8 @@ class ImportContext {
     std::set<std::string> materials_;
     std::map<std::string, std::string> named_;  // pbrt name -> JSON name
     size_t mesh_count_ = 0;
+    size_t curves_count_ = 0;
+    CurveRun curve_run_;
     std::map<std::string, Location> media_;
 };
 
@@ -107,6 +123,13 @@ std::string material_with_alpha(const std::string& name, const Json& alpha, Impo
 // pbrt_shapes.cpp: a Shape into JSON shapes appended to `shapes` (usually the document's).
 void translate_shape(const std::string& type, const Params& params, const GraphicsState& state, Json& shapes,
                      const std::string& shapes_pointer, ImportContext& ctx);
+
+// pbrt_curves.cpp: a Shape "curve", added to the last curves shape of `shapes` when it is in the
+// same state, else as a new one.
+void translate_curve(const Params& params, const GraphicsState& state, Json& shapes, const std::string& shapes_pointer,
+                     ImportContext& ctx);
+// pbrt_shapes.cpp: the MediumInterface of `state` on a shape.
+void add_media(const GraphicsState& state, Json& shape);
 
 // pbrt_media.cpp: a MakeNamedMedium into the document's media; `to_world` is the transformation
 // current at the directive.

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "candela/formats/curves/curve_file.h"
 #include "candela/formats/mesh/mesh_store.h"
 #include "candela/formats/pbrt/pbrt_location.h"
 
@@ -21,6 +22,7 @@ struct ImportedScene {
     nlohmann::ordered_json document;  // the candela scene; relative file names are relative to
                                       // the main .pbrt file's folder (pbrt-v4's rule)
     MeshStore meshes;                 // the meshes the document names that are not files
+    CurveStore curves;                // the curves likewise (runs of Shape "curve")
     // Where the document's elements came from: JSON pointer -> location in the pbrt files.
     std::vector<std::pair<std::string, Location>> origins;
     std::vector<std::string> warnings;  // located, one line each

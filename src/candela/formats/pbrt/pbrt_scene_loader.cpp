@@ -14,6 +14,7 @@ Scene load_imported_scene(const ImportedScene& imported, const std::filesystem::
     for (const auto& [pointer, at] : imported.origins) origins->emplace(pointer, at);
     LoadOptions o = options;
     o.meshes = &imported.meshes;
+    o.curves = &imported.curves;
     // An element's origin is its own or its nearest enclosing element's.
     // Elements with no origin of their own (defaults the importer added) are located in the main
     // file as a whole: never at a line of the generated JSON text.
@@ -36,6 +37,15 @@ Scene load_imported_scene(const ImportedScene& imported, const std::filesystem::
         h.add(mesh.normals.data(), mesh.normals.size() * sizeof(Vec3f));
         h.add(mesh.uvs.data(), mesh.uvs.size() * sizeof(Vec2f));
         h.add(mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+        scene.inline_file_hashes[name] = h.value();
+    }
+    for (const auto& [name, curves] : imported.curves) {
+        Hash64 h;
+        h.add(curves.points.data(), curves.points.size() * sizeof(Vec3f));
+        h.add(curves.point_end.data(), curves.point_end.size() * sizeof(uint32_t));
+        h.add(curves.widths.data(), curves.widths.size() * sizeof(float));
+        h.add(curves.normals.data(), curves.normals.size() * sizeof(Vec3f));
+        h.add(curves.normal_end.data(), curves.normal_end.size() * sizeof(uint32_t));
         scene.inline_file_hashes[name] = h.value();
     }
     scene.warnings.insert(scene.warnings.begin(), imported.warnings.begin(), imported.warnings.end());

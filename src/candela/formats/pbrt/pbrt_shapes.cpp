@@ -138,11 +138,15 @@ bool needs_sphere_frame(const std::string& material, ImportContext& ctx) {
 // The media on the shape's two sides (MediumInterface). pbrt-v4 makes a shape whose two media are
 // the same no boundary at all (GeometricPrimitive only for a medium transition): a ray crossing it
 // keeps the medium it is in. So the keys are written only where the two differ.
+}  // namespace
+
 void add_media(const GraphicsState& state, Json& shape) {
     if (state.inside_medium == state.outside_medium) return;
     shape["interior"] = state.inside_medium;
     shape["exterior"] = state.outside_medium;
 }
+
+namespace {
 
 // An instance of a sphere of radius r at the origin (an object shared by the spheres of the same
 // radius, material and orientation), placed by to_world after turning candela's sphere frame (pole
@@ -200,6 +204,10 @@ void add_emission(const GraphicsState& state, Json& shape, const std::function<d
 
 void translate_shape(const std::string& type, const Params& p, const GraphicsState& state, Json& shapes,
                      const std::string& shapes_pointer, ImportContext& ctx) {
+    if (type == "curve") {
+        translate_curve(p, state, shapes, shapes_pointer, ctx);
+        return;
+    }
     Json shape = Json::object();
     std::function<double()> area;
     const Transform& ctm = state.ctm;
