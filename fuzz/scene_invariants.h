@@ -21,9 +21,11 @@ inline void require_valid_scene(const Scene& scene) {
         require(shape.material < scene.materials.size(), "shape materials defined");
         const size_t count = shape.kind == ShapeKind::kMesh     ? scene.meshes.size()
                              : shape.kind == ShapeKind::kSphere ? scene.spheres.size()
-                                                                : scene.disks.size();
+                             : shape.kind == ShapeKind::kDisk   ? scene.disks.size()
+                                                                : scene.curves.size();
         require(shape.index < count, "shape geometry defined");
         require(shape.emission.is_finite(), "finite emission");
+        require(shape.kind != ShapeKind::kCurves || shape.emission.is_black(), "curves do not emit");
     }
     require(scene.object_names.size() == scene.objects.size(), "one name per object");
     for (const ObjectShapes& object : scene.objects) {
@@ -47,6 +49,13 @@ inline void require_valid_scene(const Scene& scene) {
         require(is_finite(disk.center) && is_finite(disk.axis_u) && is_finite(disk.axis_v) && is_finite(disk.normal) &&
                     disk.area() > 0 && std::isfinite(disk.area()),
                 "valid disks");
+    for (const CurveSet& curves : scene.curves) {
+        for (uint32_t first : curves.segments) require(size_t(first) + 4 <= curves.points.size(), "curve segments defined");
+        for (const CurvePoint& c : curves.points)
+            require(is_finite(c.p) && std::isfinite(c.r) && c.r >= 0, "finite curve points and radii");
+        require(curves.type != CurveType::kRibbon || curves.normals.size() == curves.points.size(),
+                "a normal per ribbon control point");
+    }
     require(scene.camera.width >= 1 && scene.camera.height >= 1, "a camera with pixels");
     require(scene.sampler.spp >= 1, "at least one sample per pixel");
     require(scene.integrator.max_depth >= 1, "a positive max_depth");

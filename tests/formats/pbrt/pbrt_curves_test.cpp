@@ -13,6 +13,7 @@
 #include "candela/formats/pbrt/pbrt_importer.h"
 #include "candela/formats/pbrt/pbrt_scene_loader.h"
 #include "candela/formats/scene_file.h"
+#include "candela/render/renderer.h"
 #include "support/test_files.h"
 
 namespace candela::pbrt {
@@ -122,6 +123,23 @@ TEST(PbrtCurves, ConvertWritesCurvesFilesThatLoadToTheSameCurves) {
         EXPECT_EQ(converted.curves[0].points[i].r, direct.curves[0].points[i].r);
     }
     (void)r;
+}
+
+TEST(PbrtCurves, TheFixtureOfEveryKindLoadsWithoutWarningsAndRendersFinite) {
+    Scene scene = load_scene_file(std::filesystem::path(CANDELA_TEST_DATA_DIR) / "pbrt" / "curves.pbrt");
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    ASSERT_EQ(scene.curves.size(), 4u);  // each curve differs from the last in kind, basis or degree
+    scene.sampler.spp = 4;
+    const Image image = render(scene, {.threads = 2}).image;
+    double sum = 0;
+    for (const Rgb& p : image.pixels) {
+        ASSERT_TRUE(p.is_finite());
+        sum += double(p.r);
+    }
+    // The diffuse curves block part of the environment of 1 and reflect half of it.
+    const double mean = sum / double(image.pixels.size());
+    EXPECT_LT(mean, 0.99);
+    EXPECT_GT(mean, 0.5);
 }
 
 }  // namespace
