@@ -187,12 +187,12 @@ TEST(PbrtImporter, ErrorsPointIntoThePbrtFile) {
 
 TEST(PbrtImporter, WhatCandelaLacksIsAWarningWithItsLocation) {
     const ImportedScene s = import(std::string("Accelerator \"kdtree\"\nWorldBegin\n"
-                                               "Shape \"curve\" \"point3 P\" [0 0 0 1 1 1 2 2 2 3 3 3]\n"
-                                               "Shape \"curve\" \"point3 P\" [0 0 0 1 1 1 2 2 2 3 3 3]\n"
+                                               "Shape \"hyperboloid\" \"float zmax\" 1\n"
+                                               "Shape \"hyperboloid\" \"float zmax\" 1\n"
                                                "Shape \"sphere\" \"float frobnicate\" 2\n") +
                                    kLight);
     EXPECT_TRUE(has_warning(s.warnings, "inline.pbrt:1:1: Accelerator"));
-    EXPECT_TRUE(has_warning(s.warnings, "Shape \"curve\" is not supported; skipped (and 1 more like it)"));
+    EXPECT_TRUE(has_warning(s.warnings, "Shape \"hyperboloid\" is not supported; skipped (and 1 more like it)"));
     EXPECT_TRUE(has_warning(s.warnings, "\"float frobnicate\" is not used"));
 }
 
