@@ -238,6 +238,23 @@ double linear_determinant(const AffineMap& a) {
            m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
 }
 
+constexpr int kCurveTessellationRate = 16;
+
+// Embree's filter for ribbon curves: a hit on the ray-facing ribbon stands where it lies within the
+// part of the width that the ribbon, turned to its normal, shows the ray (pbrt-v4's |cos| rule;
+// Embree's v is the signed distance from the centre over the half width).
+void ribbon_filter(const RTCFilterFunctionNArguments* args) {
+    const auto& c = *static_cast<const CurveSet*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const Vec3f d(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                      RTCRayN_dir_z(args->ray, args->N, i));
+        const float scale = ribbon_width_scale(c, RTCHitN_primID(args->hit, args->N, i),
+                                               std::clamp(RTCHitN_u(args->hit, args->N, i), 0.0f, 1.0f), normalize(d));
+        if (!(std::abs(RTCHitN_v(args->hit, args->N, i)) <= scale)) args->valid[i] = 0;
+    }
+}
+
 RTCRay to_embree(const Ray& ray) {
     RTCRay r;
     r.org_x = ray.o.x;
@@ -379,22 +396,25 @@ struct Accelerator::Impl {
         commit_and_attach(g, target, id);
     }
 
-    // Curves as Embree's cubic Bezier curves: ray-facing ribbons (flat and cylinder), or bands
-    // oriented by their normals (ribbon). Embree copies the points into its own buffers.
+    // Curves as Embree's cubic Bezier curves, ray-facing ribbons; a `ribbon` curve is one too,
+    // narrowed by ribbon_filter as pbrt-v4 narrows it. Embree copies the points into its buffers.
     void attach_curves(const CurveSet& curves, RTCScene target, unsigned id) {
-        const bool ribbon = curves.type == CurveType::kRibbon;
-        RTCGeometry g = rtcNewGeometry(device, ribbon ? RTC_GEOMETRY_TYPE_NORMAL_ORIENTED_BEZIER_CURVE
-                                                      : RTC_GEOMETRY_TYPE_FLAT_BEZIER_CURVE);
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_FLAT_BEZIER_CURVE);
         auto* v = static_cast<CurvePoint*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
                                                                    sizeof(CurvePoint), curves.points.size()));
         std::copy(curves.points.begin(), curves.points.end(), v);
         auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT,
                                                                    sizeof(unsigned), curves.segment_count()));
         std::copy(curves.segments.begin(), curves.segments.end(), idx);
-        if (ribbon) {
-            auto* n = static_cast<Vec3f*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3,
-                                                                  sizeof(Vec3f), curves.normals.size()));
-            std::copy(curves.normals.begin(), curves.normals.end(), n);
+        // Embree's flat curves are chains of ray-facing quads, 4 a segment by default: a polyline
+        // that shows its corners wherever a curve is wider than a pixel or two. pbrt-v4 refines
+        // until the pieces are narrower than the width; 16 quads a segment keep the chord error
+        // below 1/256 of the segment's bend, at no visible cost for hair (bench/RESULTS.md).
+        rtcSetGeometryTessellationRate(g, float(kCurveTessellationRate));
+        if (curves.type == CurveType::kRibbon) {
+            rtcSetGeometryUserData(g, const_cast<CurveSet*>(&curves));
+            rtcSetGeometryIntersectFilterFunction(g, ribbon_filter);
+            rtcSetGeometryOccludedFilterFunction(g, ribbon_filter);
         }
         commit_and_attach(g, target, id);
     }

@@ -4,11 +4,14 @@
 // bound. Embree says where the ray meets the curve; what the surface looks like there is pbrt's:
 //  - dpdu is the segment's derivative at u;
 //  - dpdv is dpdu turned by +90 degrees about the ray (flat and cylinder curves face the ray),
-//    or cross(n_ribbon, dpdu) for ribbons, n_ribbon the end normals slerped at u;
+//    or cross(n_ribbon, dpdu) for ribbons, n_ribbon the end normals slerped at u (a ribbon is
+//    traced as pbrt-v4 traces it: a ray-facing ribbon narrowed to |cos(n_ribbon, ray)| of its
+//    width, by an Embree filter on a flat curve);
 //  - a cylinder's dpdv is then turned about dpdu by -theta, theta from -90 to 90 degrees as v goes
 //    from 0 to 1, so that its normal sweeps across the width like a tube's;
 //  - the normal is cross(dpdu, dpdv), flipped when reverse_orientation;
-//  - v is the signed distance from the curve's centre along dpdv, over the width, plus 1/2;
+//  - v is the signed distance from the curve's centre across the ray-facing ribbon, over the width
+//    the ray sees, plus 1/2;
 //  - the error bound is the width in every axis (pbrt-v4: the intersection is found to a fraction
 //    of the width, and offsetting spawned rays by it keeps them off the curve they leave).
 #include <algorithm>
@@ -32,32 +35,51 @@ inline Vec3f rotate_perpendicular(const Vec3f& v, const Vec3f& axis, float angle
     return v * std::cos(angle) + cross(axis, v) * std::sin(angle);
 }
 
+// A ribbon's normal at u: its segment's end normals slerped (pbrt-v4's), unit.
+inline Vec3f ribbon_normal(const CurveSet& c, uint32_t segment, float u) {
+    const Vec3f n0 = c.normals[c.segments[segment]], n1 = c.normals[c.segments[segment] + 3];
+    const float angle = std::acos(std::clamp(dot(n0, n1), -1.0f, 1.0f));
+    const Vec3f n = angle < 1e-4f ? n0 * (1 - u) + n1 * u
+                                  : n0 * (std::sin((1 - u) * angle) / std::sin(angle)) +
+                                        n1 * (std::sin(u * angle) / std::sin(angle));
+    return normalize(n);
+}
+
+// The fraction of its width a ribbon shows to a ray along unit `d` at u: pbrt-v4 intersects a
+// ribbon as a ray-facing one of width w |cos| of the angle between its normal and the ray.
+inline float ribbon_width_scale(const CurveSet& c, uint32_t segment, float u, const Vec3f& d) {
+    return std::abs(dot(ribbon_normal(c, segment, u), d));
+}
+
 inline CurveHit curve_hit(const CurveSet& c, uint32_t segment, float u, const Vec3f& p, const Vec3f& ray_dir) {
     const CurvePoint* cp = &c.points[c.segments[segment]];
     u = std::clamp(u, 0.0f, 1.0f);
     Vec3f dpdu = bezier_derivative(cp, u);
     if (!(length(dpdu) > 0)) dpdu = cp[3].p - cp[0].p;  // a cusp: the chord's direction
     const Vec3f t = normalize(dpdu);
-    const float width = 2 * bezier_radius(cp, u);
-    Vec3f across;
-    if (c.type == CurveType::kRibbon) {
-        const Vec3f n0 = c.normals[c.segments[segment]], n1 = c.normals[c.segments[segment] + 3];
-        const float angle = std::acos(std::clamp(dot(n0, n1), -1.0f, 1.0f));
-        Vec3f n = angle < 1e-4f ? n0 * (1 - u) + n1 * u
-                                : n0 * (std::sin((1 - u) * angle) / std::sin(angle)) +
-                                      n1 * (std::sin(u * angle) / std::sin(angle));
-        across = cross(n, t);
-    } else {
-        across = cross(ray_dir, t);
-    }
+    const Vec3f d = normalize(ray_dir);
+    float width = 2 * bezier_radius(cp, u);
+    // v from the distance to the curve's centre across the ray-facing ribbon, over the width it
+    // shows the ray, signed along dpdu turned +90 degrees about the ray (pbrt-v4's edge function).
+    Vec3f across = cross(d, t);
     const float across_length = length(across);
     across = across_length > 0 ? across / across_length : Vec3f(0, 0, 0);
+    Vec3f ribbon_n;
+    if (c.type == CurveType::kRibbon) {
+        ribbon_n = ribbon_normal(c, segment, u);
+        width *= std::abs(dot(ribbon_n, d));
+    }
     CurveHit h;
     h.p = p;
     const Vec3f centre = bezier_point(cp, u);
     const float v = width > 0 ? std::clamp(0.5f + dot(p - centre, across) / width, 0.0f, 1.0f) : 0.5f;
     h.uv = Vec2f(u, v);
-    if (c.type == CurveType::kCylinder) across = rotate_perpendicular(across, t, -kPi * (v - 0.5f));
+    if (c.type == CurveType::kRibbon) {
+        const Vec3f b = cross(ribbon_n, t);
+        across = length(b) > 0 ? normalize(b) : across;
+    } else if (c.type == CurveType::kCylinder) {
+        across = rotate_perpendicular(across, t, -kPi * (v - 0.5f));
+    }
     Vec3f n = cross(t, across);
     const float n_length = length(n);
     // A ray along the curve's tangent has no facing direction: any normal across the tangent.

@@ -1,5 +1,6 @@
-// Participating media against pbrt-v4 (issue 24): the five small scenes of
-// tests/data/pbrt-media/ (fog with the camera in it and a glass sphere of coloured medium, a
+// Small scenes written for one feature each, against pbrt-v4's renders of them.
+//
+// Participating media (issue 24): the five small scenes of tests/data/pbrt-media/ (fog with the camera in it and a glass sphere of coloured medium, a
 // uniformgrid with temperature emission, an rgbgrid, pbrt-v4's cloud, a nanovdb grid; each inside
 // a shape of material "interface" or behind a dielectric), opened as .pbrt files and rendered in
 // spectral mode at their own resolution and spp, against pbrt-v4's volpath renders of them
@@ -7,6 +8,8 @@
 // its render with --seed 7 against the reference, about 1.5 times that plus one or two percent
 // (tests/data/pbrt-media/README.md has the commands, times and numbers). The images are 96x96,
 // so the blocks are 8x8 pixels (144 of them), not the 16x16 of ../shared/refs/pbrt-v4/.
+//
+// Curves (issue 25): tests/data/pbrt-curves/ (README.md there), the same way.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -24,25 +27,26 @@
 namespace candela {
 namespace {
 
-struct MediaScene {
+struct SmallScene {
     const char* name;
     double max_mean_bias, max_p95;  // README.md, "bounds"
+    const char* folder = "pbrt-media";
 };
 
-constexpr MediaScene kScenes[] = {
+constexpr SmallScene kScenes[] = {
     {"fog-spot-glass", 0.02, 0.28}, {"grid-temperature", 0.02, 0.18}, {"rgbgrid-sphere", 0.02, 0.12},
-    {"cloud-box", 0.01, 0.05},      {"vdb-smoke", 0.01, 0.04},
+    {"cloud-box", 0.01, 0.05},      {"vdb-smoke", 0.01, 0.04},     {"curves-diffuse", 0.01, 0.02, "pbrt-curves"},
 };
 
 // gtest prints the scene's name, not its bytes.
-void PrintTo(const MediaScene& s, std::ostream* os) { *os << s.name; }
+void PrintTo(const SmallScene& s, std::ostream* os) { *os << s.name; }
 
 constexpr int kBlock = 8;
 
 // The scene's folder: the source's, except for vdb-smoke, whose .nvdb is stored gzip-compressed:
 // the scene and the inflated grid go to a folder of the build tree.
-std::filesystem::path scene_folder(const std::string& name) {
-    const std::filesystem::path source = std::filesystem::path(CANDELA_TEST_DATA_DIR) / "pbrt-media";
+std::filesystem::path scene_folder(const std::string& name, const std::string& folder) {
+    const std::filesystem::path source = std::filesystem::path(CANDELA_TEST_DATA_DIR) / folder;
     if (name != "vdb-smoke") return source;
     const std::filesystem::path out = std::filesystem::path(CANDELA_TEST_BINARY_DIR) / "pbrt-media";
     std::filesystem::create_directories(out);
@@ -56,15 +60,15 @@ std::filesystem::path scene_folder(const std::string& name) {
     return out;
 }
 
-class AgainstPbrtV4Media : public testing::TestWithParam<MediaScene> {};
+class AgainstPbrtV4SmallScenes : public testing::TestWithParam<SmallScene> {};
 
-TEST_P(AgainstPbrtV4Media, IsWithinPbrtsOwnNoise) {
-    const MediaScene& p = GetParam();
-    const std::filesystem::path folder = scene_folder(p.name);
+TEST_P(AgainstPbrtV4SmallScenes, IsWithinPbrtsOwnNoise) {
+    const SmallScene& p = GetParam();
+    const std::filesystem::path folder = scene_folder(p.name, p.folder);
     const Scene scene = load_scene_file(folder / (std::string(p.name) + ".pbrt"));
     ASSERT_TRUE(scene.integrator.spectral);
     const Image image = render(scene, {}).image;
-    const Image ref = read_image(std::filesystem::path(CANDELA_TEST_DATA_DIR) / "pbrt-media" / "refs" /
+    const Image ref = read_image(std::filesystem::path(CANDELA_TEST_DATA_DIR) / p.folder / "refs" /
                                  (std::string(p.name) + ".exr"));
     const bench::BlockComparison c =
         bench::compare_blocks(bench::block_means(image, kBlock), bench::block_means(ref, kBlock), 1);
@@ -77,8 +81,8 @@ TEST_P(AgainstPbrtV4Media, IsWithinPbrtsOwnNoise) {
         << ", block p50 " << c.p50 << ", p95 " << c.p95 << ", max " << c.max;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, AgainstPbrtV4Media, testing::ValuesIn(kScenes),
-                         [](const testing::TestParamInfo<MediaScene>& param_info) {
+INSTANTIATE_TEST_SUITE_P(Scenes, AgainstPbrtV4SmallScenes, testing::ValuesIn(kScenes),
+                         [](const testing::TestParamInfo<SmallScene>& param_info) {
                              std::string n = param_info.param.name;
                              for (char& ch : n)
                                  if (ch == '-') ch = '_';
