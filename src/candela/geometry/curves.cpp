@@ -75,7 +75,6 @@ std::string add_curve(CurveSet& set, std::span<const Vec3f> cp, CurveBasis basis
             if (!finite(v) || !(length(v) > 0)) return "a ribbon's normals must be finite and nonzero";
     }
     const auto radius = [&](float t) { return 0.5f * (width0 + (width1 - width0) * t); };
-    set.points.reserve(set.points.size() + 3 * n + 1);
     for (size_t s = 0; s < n; ++s) {
         Cubic c;
         if (basis == CurveBasis::kBezier) {
