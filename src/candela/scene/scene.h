@@ -104,4 +104,14 @@ struct Scene {
     std::vector<std::string> warnings;
 };
 
+// Whether the scene places a participating medium anywhere: the camera in one, or a shape with one
+// on either side. Integrators other than volpath and bsdf render such media as vacuum, and the
+// scene loader and a render job's --integrator both warn so (pbrt-v4's cpu/render.cpp does too).
+inline bool places_media(const Scene& scene) {
+    if (scene.camera_medium != kNoMedium) return true;
+    for (const Shape& shape : scene.shapes)
+        if (shape.interior != kNoMedium || shape.exterior != kNoMedium) return true;
+    return false;
+}
+
 }  // namespace candela

@@ -334,9 +334,7 @@ void warn_if_unlit(Scene& scene) {
 void warn_if_media_ignored(Scene& scene) {
     const IntegratorType t = scene.integrator.type;
     if (t == IntegratorType::kVolPath || t == IntegratorType::kBsdf) return;
-    bool in_media = scene.camera_medium != kNoMedium;
-    for (const Shape& shape : scene.shapes) in_media |= shape.interior != kNoMedium || shape.exterior != kNoMedium;
-    if (!in_media) return;
+    if (!places_media(scene)) return;
     scene.warnings.push_back(
         SceneError(SourceLocation{scene.file.string(), 0, 0, ""},
                    fmt::format("the scene has participating media but the {} integrator ignores them (it renders "

@@ -124,9 +124,7 @@ void apply_overrides(const RenderOverrides& o, Scene& scene) {
                      "scene's point, spot or directional lights (they have no area); use path or whitted");
         // The scene loader warns the same for a scene file's own integrator (scene_loader.cpp).
         const bool sees_media = *o.integrator == IntegratorType::kVolPath || *o.integrator == IntegratorType::kBsdf;
-        bool in_media = scene.camera_medium != kNoMedium;
-        for (const Shape& shape : scene.shapes) in_media |= shape.is_medium_boundary();
-        if (!sees_media && in_media)
+        if (!sees_media && places_media(scene))
             scene.warnings.push_back(fmt::format("--integrator {}: the scene has participating media, which the {} "
                                                  "integrator ignores (it renders them as vacuum); use volpath",
                                                  integrator_type_name(*o.integrator), integrator_type_name(*o.integrator)));
