@@ -325,7 +325,9 @@ static_assert(LobeParamsType<CoatedConductorParams>);
 // surface's v whatever the parameters, so it is built at every hit (is_textured), and its x axis
 // is the fibre's tangent dpdu (is_anisotropic).
 struct HairParams {
-    ColorParam sigma_a{Rgb(0.0f), kNoTexture, 0.0f, kUnbounded, SpectrumForm::kUnbounded};
+    // pbrt-v4's default: eumelanin 1.3, a brown.
+    ColorParam sigma_a{hair_sigma_a_from_concentration(1.3f, 0.0f), kNoTexture, 0.0f, kUnbounded,
+                       SpectrumForm::kUnbounded};
     ColorParam reflectance{Rgb(0.0f), kNoTexture, 0.0f, 1.0f, SpectrumForm::kAlbedo};
     bool from_reflectance = false;
     FloatParam eta{1.55f};
