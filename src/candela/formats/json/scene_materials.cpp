@@ -146,7 +146,8 @@ CoatedConductorParams read_coated_conductor(JsonCursor& c, Scene& scene) {
 
 // `hair` (pbrt-v4's HairMaterial): the absorption as `sigma_a`, `reflectance` or melanin
 // concentrations `eumelanin` and `pheomelanin` (one of the three; none: eumelanin 1.3, pbrt-v4's
-// brown), and eta, beta_m, beta_n, alpha (degrees). Concentrations are numbers, not textures.
+// brown), and eta, beta_m, beta_n, scale_angle (degrees; pbrt-v4's `alpha`, a name every candela
+// material already gives its coverage). Concentrations are numbers, not textures.
 HairParams read_hair(JsonCursor& c, Scene& scene) {
     HairParams p;
     std::optional<JsonCursor> sigma_a = c.get("sigma_a"), reflectance = c.get("reflectance");
@@ -170,7 +171,7 @@ HairParams read_hair(JsonCursor& c, Scene& scene) {
     if (auto v = c.get("eta")) p.eta = read_float_param(*v, scene, Bounds::above(0));
     if (auto v = c.get("beta_m")) p.beta_m = read_float_param(*v, scene, Bounds::closed(0, 1));
     if (auto v = c.get("beta_n")) p.beta_n = read_float_param(*v, scene, Bounds::closed(0, 1));
-    if (auto v = c.get("alpha")) p.alpha = read_float_param(*v, scene, Bounds::closed(-90, 90));
+    if (auto v = c.get("scale_angle")) p.alpha = read_float_param(*v, scene, Bounds::closed(-90, 90));
     return p;
 }
 

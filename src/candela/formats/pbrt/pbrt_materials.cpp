@@ -274,7 +274,8 @@ void hair_keys(const Params& p, Json& m, ImportContext& ctx) {
         // pbrt-v4 clamps beta_m and beta_n into [0.01, 1] where candela's file refuses them.
         if (v.is_number() && (std::string_view(key) == "beta_m" || std::string_view(key) == "beta_n"))
             v = std::clamp(v.get<double>(), 0.01, 1.0);
-        m[key] = v;
+        // pbrt-v4's `alpha` (the scales' angle) is candela's scale_angle: a material's alpha is its coverage.
+        m[std::string_view(key) == "alpha" ? "scale_angle" : key] = v;
     }
 }
 
