@@ -260,8 +260,12 @@ TEST(LobeFurnace, EveryLobeSampledGivesItsDirectionalAlbedo) {
                            [](const ThinDielectricLobe&) { return 1.0; },
                            // Skipped above.
                            [](const CoatedDiffuseLobe&) { return kNoClosedForm; },
-                           [](const CoatedConductorLobe&) { return kNoClosedForm; }},
+                           [](const CoatedConductorLobe&) { return kNoClosedForm; },
+                           // Without absorption a fibre scatters everything; with it, no closed
+                           // form (hair_stat_test.cpp compares against uniform sampling).
+                           [](const HairLobe& l) { return l.sigma_a == Color(0.0f) ? 1.0 : kNoClosedForm; }},
                 c.lobe);
+            if (std::isnan(expected)) continue;
             Estimate e = directional_albedo(b, wo, TransportMode::kImportance, 17);
             expect_albedo(e, expected, 1e-5);
             EXPECT_LE(e.mean, 1.0 + 1e-5);

@@ -11,7 +11,7 @@
 namespace candela::test {
 
 // A new lobe type must be added to kLobeCases (and thereby to every test that runs over them).
-static_assert(std::variant_size_v<BsdfLobe> == 9, "add the new lobe to kLobeCases");
+static_assert(std::variant_size_v<BsdfLobe> == 10, "add the new lobe to kLobeCases");
 
 // Lobes whose eval() and pdf() are stochastic estimates (materials/layered.h): sample() agrees
 // with them in expectation only, which layered_stat_test.cpp checks; the generic tests check of
@@ -28,7 +28,7 @@ struct LobeCase {
 inline const Color kGoldEta(0.143f, 0.374f, 1.442f);
 inline const Color kGoldK(3.983f, 2.385f, 1.603f);
 
-inline const std::array<LobeCase, 27> kLobeCases = {{
+inline const std::array<LobeCase, 29> kLobeCases = {{
     {"lambertian", LambertianLobe{Color(0.8f, 0.5f, 0.2f)}},
     {"lambertian_white", LambertianLobe{Color(1.0f)}},
     {"mirror", SpecularReflectionLobe{Color(0.9f, 0.6f, 0.3f)}},
@@ -70,6 +70,9 @@ inline const std::array<LobeCase, 27> kLobeCases = {{
      CoatedConductorLobe{CoatInterface{1.33f, TrowbridgeReitz(0.2f)},
                          ConductorLobe{TrowbridgeReitz(0.05f, 0.3f), kGoldEta / 1.33f, kGoldK / 1.33f},
                          Color(0.9f), 0.5f, -0.3f, 10, 1}},
+    // Hair: offset h, eta, sigma_a, beta_m, beta_n, alpha (radians).
+    {"hair_white", HairLobe::make(0.3f, 1.55f, Color(0.0f), 0.3f, 0.3f, 0.035f)},
+    {"hair_brown", HairLobe::make(-0.7f, 1.55f, Color(0.54f, 0.91f, 1.78f), 0.5f, 0.4f, 0.035f)},
 }};
 
 // The unit direction at polar cosine cos_theta and azimuth phi (local frame, z = normal).

@@ -6,6 +6,7 @@
 #include "candela/materials/conductor.h"
 #include "candela/materials/dielectric.h"
 #include "candela/materials/fresnel_specular.h"
+#include "candela/materials/hair.h"
 #include "candela/materials/lambertian.h"
 #include "candela/materials/layered.h"
 #include "candela/materials/specular_reflection.h"
@@ -16,6 +17,6 @@ namespace candela {
 
 using BsdfLobe = Variant<LambertianLobe, SpecularReflectionLobe, FresnelSpecularLobe,
                          SpecularTransmissionLobe, ConductorLobe, DielectricLobe, ThinDielectricLobe,
-                         CoatedDiffuseLobe, CoatedConductorLobe>;
+                         CoatedDiffuseLobe, CoatedConductorLobe, HairLobe>;
 
 }  // namespace candela

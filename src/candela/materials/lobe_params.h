@@ -318,8 +318,48 @@ struct CoatedConductorParams {
 };
 static_assert(LobeParamsType<CoatedConductorParams>);
 
+// `hair`: pbrt-v4's HairMaterial (hair.h). The absorption is `sigma_a`, or the one that gives
+// the colour `reflectance` (hair_sigma_a_from_reflectance, at this point's beta_n); the scene
+// loader turns melanin concentrations into sigma_a. beta_m and beta_n are clamped to
+// [0.01, 1] as pbrt-v4 does; alpha is in degrees. h = -1 + 2 v: the lobe changes along the
+// surface's v whatever the parameters, so it is built at every hit (is_textured), and its x axis
+// is the fibre's tangent dpdu (is_anisotropic).
+struct HairParams {
+    // pbrt-v4's default: eumelanin 1.3, a brown.
+    ColorParam sigma_a{hair_sigma_a_from_concentration(1.3f, 0.0f), kNoTexture, 0.0f, kUnbounded,
+                       SpectrumForm::kUnbounded};
+    ColorParam reflectance{Rgb(0.0f), kNoTexture, 0.0f, 1.0f, SpectrumForm::kAlbedo};
+    bool from_reflectance = false;
+    FloatParam eta{1.55f};
+    FloatParam beta_m{0.3f};
+    FloatParam beta_n{0.3f};
+    FloatParam alpha{2.0f};  // degrees
+
+    CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
+        const float bm = clamp(t.eval(beta_m, ctx), 0.01f, 1.0f);
+        const float bn = clamp(t.eval(beta_n, ctx), 0.01f, 1.0f);
+        Color sa;
+        if (from_reflectance) {
+            sa = map_channels(clamp_channels(t.eval(reflectance, ctx), 0.0f, 1.0f),
+                              [bn](float c) { return hair_sigma_a_from_reflectance(c, bn); });
+        } else {
+            sa = clamp_channels(t.eval(sigma_a, ctx), 0.0f, kUnbounded);
+        }
+        return HairLobe::make(-1.0f + 2.0f * ctx.uv.y, t.eval(eta, ctx), sa, bm, bn, radians(t.eval(alpha, ctx)));
+    }
+    CANDELA_HD bool is_textured() const { return true; }
+    CANDELA_HD bool is_anisotropic() const { return true; }
+    // Passes each colour parameter to f (make_material prepares them for spectral mode).
+    template <class F>
+    void for_each_color(F&& f) {
+        f(sigma_a);
+        f(reflectance);
+    }
+};
+static_assert(LobeParamsType<HairParams>);
+
 using LobeParams = Variant<DiffuseParams, MirrorParams, DielectricParams, TransmissionParams,
                            ConductorParams, ConductorReflectanceParams, RoughDielectricParams,
-                           ThinDielectricParams, CoatedDiffuseParams, CoatedConductorParams>;
+                           ThinDielectricParams, CoatedDiffuseParams, CoatedConductorParams, HairParams>;
 
 }  // namespace candela

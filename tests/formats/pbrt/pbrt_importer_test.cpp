@@ -210,5 +210,40 @@ TEST(PbrtImporter, PbrtsLeftHandedCameraIsNotMirrored) {
     EXPECT_TRUE(m.document["camera"].contains("look_at"));
 }
 
+TEST(PbrtImporter, HairIsImportedWithPbrtsPrecedenceOfAbsorptions) {
+    const ImportedScene s = import(std::string("WorldBegin\n"
+                                               "MakeNamedMaterial \"plain\" \"string type\" \"hair\"\n"
+                                               "MakeNamedMaterial \"both\" \"string type\" \"hair\" \"rgb sigma_a\" [0.1 0.2 0.3] "
+                                               "\"rgb reflectance\" [0.5 0.5 0.5] \"float beta_m\" 0.5 \"float beta_n\" 1.5 "
+                                               "\"float alpha\" 3 \"float eta\" 1.4\n"
+                                               "MakeNamedMaterial \"colour\" \"string type\" \"hair\" \"rgb color\" [0.6 0.4 0.2]\n"
+                                               "MakeNamedMaterial \"melanin\" \"string type\" \"hair\" \"float pheomelanin\" 2\n") +
+                                   kLight);
+    const auto& m = s.document["materials"];
+    EXPECT_EQ(m["plain"], nlohmann::ordered_json({{"type", "hair"}}));
+    EXPECT_EQ(m["both"]["sigma_a"], nlohmann::ordered_json::array({0.1, 0.2, 0.3}));
+    EXPECT_FALSE(m["both"].contains("reflectance"));
+    EXPECT_TRUE(has_warning(s.warnings, "\"reflectance\" is ignored since \"sigma_a\" is given"));
+    EXPECT_EQ(m["both"]["beta_m"], 0.5);
+    EXPECT_EQ(m["both"]["beta_n"], 1.0);  // pbrt-v4 clamps into [0.01, 1]
+    EXPECT_EQ(m["both"]["scale_angle"], 3.0);
+    EXPECT_FALSE(m["both"].contains("alpha"));
+    EXPECT_EQ(m["both"]["eta"], 1.4);
+    EXPECT_EQ(m["colour"]["reflectance"], nlohmann::ordered_json::array({0.6, 0.4, 0.2}));
+    EXPECT_EQ(m["melanin"]["eumelanin"], 0.0);
+    EXPECT_EQ(m["melanin"]["pheomelanin"], 2.0);
+    EXPECT_FALSE(has_warning(s.warnings, "not supported"));
+    // The document loads: a hair material per name.
+    const Scene scene = load_imported_scene(s, kFile);
+    int hairs = 0;
+    for (const Material& material : scene.materials) {
+        if (material.bsdf.lobe_count == 1 && std::holds_alternative<HairParams>(material.params[0])) {
+            EXPECT_TRUE(material.anisotropic);
+            ++hairs;
+        }
+    }
+    EXPECT_EQ(hairs, 4);
+}
+
 }  // namespace
 }  // namespace candela::pbrt

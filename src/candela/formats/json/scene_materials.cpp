@@ -17,12 +17,12 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 11> kMaterialTypes = {
-    "blend", "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "interface", "mirror",
-    "mix", "thin_dielectric", "transmission"};
+constexpr std::array<std::string_view, 12> kMaterialTypes = {
+    "blend", "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "hair", "interface",
+    "mirror", "mix", "thin_dielectric", "transmission"};
 // The types a `mix` may combine: every material type but `mix` itself.
-constexpr std::array<std::string_view, 8> kLobeMaterialTypes = {
-    "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "mirror",
+constexpr std::array<std::string_view, 9> kLobeMaterialTypes = {
+    "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "hair", "mirror",
     "thin_dielectric", "transmission"};
 constexpr std::array<std::string_view, 2> kFresnelNames = {"exact", "schlick"};
 constexpr std::array<std::string_view, 2> kNormalMapConventions = {"opengl", "directx"};
@@ -144,6 +144,37 @@ CoatedConductorParams read_coated_conductor(JsonCursor& c, Scene& scene) {
     return p;
 }
 
+// `hair` (pbrt-v4's HairMaterial): the absorption as `sigma_a`, `reflectance` or melanin
+// concentrations `eumelanin` and `pheomelanin` (one of the three; none: eumelanin 1.3, pbrt-v4's
+// brown), and eta, beta_m, beta_n, scale_angle (degrees; pbrt-v4's `alpha`, a name every candela
+// material already gives its coverage). Concentrations are numbers, not textures.
+HairParams read_hair(JsonCursor& c, Scene& scene) {
+    HairParams p;
+    std::optional<JsonCursor> sigma_a = c.get("sigma_a"), reflectance = c.get("reflectance");
+    std::optional<JsonCursor> eumelanin = c.get("eumelanin"), pheomelanin = c.get("pheomelanin");
+    const int given = int(sigma_a.has_value()) + int(reflectance.has_value()) +
+                      int(eumelanin.has_value() || pheomelanin.has_value());
+    if (given > 1) {
+        const JsonCursor& second = reflectance && sigma_a ? *reflectance : eumelanin ? *eumelanin : *pheomelanin;
+        second.fail("give one of \"sigma_a\", \"reflectance\", or \"eumelanin\"/\"pheomelanin\"");
+    }
+    if (sigma_a) {
+        p.sigma_a = read_color_param(*sigma_a, scene, Bounds::at_least(0));
+    } else if (reflectance) {
+        p.reflectance = read_color_param(*reflectance, scene, kReflectance);
+        p.from_reflectance = true;
+    } else {
+        const float ce = eumelanin ? eumelanin->number_f(Bounds::at_least(0)) : (pheomelanin ? 0.0f : 1.3f);
+        const float cp = pheomelanin ? pheomelanin->number_f(Bounds::at_least(0)) : 0.0f;
+        p.sigma_a.value = hair_sigma_a_from_concentration(ce, cp);
+    }
+    if (auto v = c.get("eta")) p.eta = read_float_param(*v, scene, Bounds::above(0));
+    if (auto v = c.get("beta_m")) p.beta_m = read_float_param(*v, scene, Bounds::closed(0, 1));
+    if (auto v = c.get("beta_n")) p.beta_n = read_float_param(*v, scene, Bounds::closed(0, 1));
+    if (auto v = c.get("scale_angle")) p.alpha = read_float_param(*v, scene, Bounds::closed(-90, 90));
+    return p;
+}
+
 // The lobe of a material of one of kLobeMaterialTypes, whose `type` (already read) is `type`.
 LobeParams read_lobe(JsonCursor& c, std::string_view type, Scene& scene) {
     if (type == "coated_diffuse") return read_coated_diffuse(c, scene);
@@ -159,6 +190,7 @@ LobeParams read_lobe(JsonCursor& c, std::string_view type, Scene& scene) {
         return p;
     }
     if (type == "conductor") return read_conductor(c, scene);
+    if (type == "hair") return read_hair(c, scene);
     float ior = 1.5f;
     uint32_t ior_spectrum = kNoSpectrum;
     if (auto v = c.get("ior")) ior = read_ior(*v, scene, ior_spectrum);

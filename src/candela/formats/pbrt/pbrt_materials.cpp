@@ -3,7 +3,10 @@
 // microfacet alpha with sqrt (remaproughness, true by default); candela's roughness is alpha.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string_view>
 
 #include "candela/formats/pbrt/pbrt_import_context.h"
 
@@ -225,6 +228,57 @@ void layered_keys(const Params& p, Json& m, ImportContext& ctx) {
     m["pbrt_v4_weights"] = true;
 }
 
+// pbrt-v4's hair: sigma_a, else reflectance (or its older name color), else the melanin
+// concentrations, each ignored with a warning when an earlier one is given, as pbrt-v4 does.
+// candela takes the concentrations as numbers: a texture warns and its default is used.
+void hair_keys(const Params& p, Json& m, ImportContext& ctx) {
+    const auto colours = spectrum_textures(ctx);
+    const auto numbers = float_textures(ctx);
+    Json sigma_a = p.colour("sigma_a", colours);
+    Json reflectance = p.colour("reflectance", colours);
+    if (reflectance.is_null()) reflectance = p.colour("color", colours);
+    std::optional<double> melanin[2];
+    const char* melanin_keys[2] = {"eumelanin", "pheomelanin"};
+    for (int i = 0; i < 2; ++i) {
+        const Parameter* e = p.find(melanin_keys[i]);
+        if (!e) continue;
+        Json v = p.number_or_texture(melanin_keys[i], numbers);
+        if (v.is_number()) {
+            melanin[i] = std::max(0.0, v.get<double>());  // pbrt-v4 clamps at 0
+        } else {
+            ctx.warn(e->location, fmt::format("{}: a textured \"{}\" is not supported; 0 is used", p.directive(),
+                                              melanin_keys[i]));
+            melanin[i] = 0.0;
+        }
+    }
+    const bool has_melanin = melanin[0] || melanin[1];
+    auto ignored = [&](const char* key, const char* because) {
+        ctx.warn(p.location(), fmt::format("{}: \"{}\" is ignored since \"{}\" is given (as in pbrt-v4)", p.directive(),
+                                           key, because));
+    };
+    if (!sigma_a.is_null()) {
+        if (!reflectance.is_null()) ignored("reflectance", "sigma_a");
+        if (has_melanin) ignored("eumelanin/pheomelanin", "sigma_a");
+        m["sigma_a"] = sigma_a;
+    } else if (!reflectance.is_null()) {
+        if (has_melanin) ignored("eumelanin/pheomelanin", "reflectance");
+        m["reflectance"] = reflectance;
+    } else if (has_melanin) {
+        // pbrt-v4: a concentration not given is 0 when the other is.
+        m["eumelanin"] = melanin[0].value_or(0.0);
+        m["pheomelanin"] = melanin[1].value_or(0.0);
+    }
+    for (const char* key : {"eta", "beta_m", "beta_n", "alpha"}) {
+        Json v = p.number_or_texture(key, numbers);
+        if (v.is_null()) continue;
+        // pbrt-v4 clamps beta_m and beta_n into [0.01, 1] where candela's file refuses them.
+        if (v.is_number() && (std::string_view(key) == "beta_m" || std::string_view(key) == "beta_n"))
+            v = std::clamp(v.get<double>(), 0.01, 1.0);
+        // pbrt-v4's `alpha` (the scales' angle) is candela's scale_angle: a material's alpha is its coverage.
+        m[std::string_view(key) == "alpha" ? "scale_angle" : key] = v;
+    }
+}
+
 }  // namespace
 
 std::string translate_material(const std::string& wanted_name, const std::string& type, const Params& p,
@@ -269,12 +323,15 @@ std::string translate_material(const std::string& wanted_name, const std::string
         }
         Json amount = p.number_or_texture("amount", float_textures(ctx));
         m = Json{{"type", "blend"}, {"materials", names}, {"amount", amount.is_null() ? Json(0.5) : amount}};
+    } else if (type == "hair") {
+        m = Json{{"type", "hair"}};
+        hair_keys(p, m, ctx);
     } else if (type == "interface" || type == "" || type == "none") {
         // pbrt-v4 makes no material of these three: a boundary between media only, which rays
         // cross unchanged (and no surface to carry an area light).
         m = Json{{"type", "interface"}};
     } else {
-        // measured, hair, subsurface, diffusetransmission: a diffuse stand-in of their colour.
+        // measured, subsurface, diffusetransmission: a diffuse stand-in of their colour.
         Json r = p.colour("reflectance", colours);
         if (r.is_null() && type == "diffusetransmission") r = Json(0.25);
         ctx.warn(p.location(), fmt::format("Material \"{}\" is not supported; a diffuse material of {} stands in", type,
