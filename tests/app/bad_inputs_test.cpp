@@ -448,8 +448,12 @@ const BadInput kBadInputs[] = {
      "image has zero size (2x0)"},
     {"texture_corrupt.json", kImage, kError, "texture_corrupt.png", 0, 0, "",
      "not a PNG, JPEG, TGA or BMP image, or a corrupt one"},
-    // --- pbrt-v4 scenes, through the importer (15): the parser's syntax errors and pbrt-v4's
+    // --- pbrt-v4 scenes, through the importer (17): the parser's syntax errors and pbrt-v4's
     // semantics (blocks, names, indices), located at the directive or value at fault
+    {"pbrt_binary_scene.pbrt", kPbrt, kError, "", 0, 0, "",
+     "is a binary file, not pbrt-v4 scene text (ill-formed UTF-8 (0x89 at byte 1))"},
+    {"pbrt_gzip_include_error.pbrt", kPbrt, kError, "pbrt_gzip_include_error_geometry.pbrt.gz", 3, 16, "",
+     "unknown parameter type \"flaot\" in \"flaot radius\""},
     {"pbrt_attribute_end_unmatched.pbrt", kPbrt, kError, "", 8, 1, "",
      "AttributeEnd without a matching AttributeBegin"},
     {"pbrt_attribute_unclosed.pbrt", kPbrt, kError, "", 7, 1, "",
@@ -605,9 +609,11 @@ TEST_P(BadInputTest, LoadSceneReportsItWhereItIs) {
         << "message: " << r.message << "\nexpected to contain: " << bad.message;
     // The one line the CLI prints: file:line:col: /pointer: message.
     EXPECT_EQ(r.what, prefix + r.message);
-    // An error inside a referenced file also names the scene key that referenced it.
+    // An error inside a referenced file also names the scene key that referenced it (a pbrt-v4
+    // scene's included file: the Include directive).
     if (*bad.where) {
-        EXPECT_NE(r.message.find(" (referenced by /"), std::string::npos) << r.message;
+        const char* reference = bad.kind == kPbrt ? " (included from " : " (referenced by /";
+        EXPECT_NE(r.message.find(reference), std::string::npos) << r.message;
     }
 }
 
