@@ -42,15 +42,18 @@ ConvertResult convert_pbrt_scene(const fs::path& in, const fs::path& out) {
     ConvertResult result;
     result.warnings = load_imported_scene(imported, in).warnings;
     const fs::path out_folder = out.parent_path().empty() ? fs::path(".") : out.parent_path();
+    // The output's folder is made when it is missing, whether or not meshes go into it.
+    const auto make_folder = [](const fs::path& folder) {
+        std::error_code ec;
+        fs::create_directories(folder, ec);
+        if (ec) throw SceneError(SourceLocation{folder.string(), 0, 0, ""}, "cannot create the folder: " + ec.message());
+    };
+    make_folder(out_folder);
     rebase_file_names(imported.document, in.parent_path().empty() ? fs::path(".") : in.parent_path(), out_folder,
                       imported.meshes);
     for (const auto& [name, mesh] : imported.meshes) {
         const fs::path file = out_folder / name;
-        std::error_code ec;
-        fs::create_directories(file.parent_path(), ec);
-        if (ec)
-            throw SceneError(SourceLocation{file.parent_path().string(), 0, 0, ""},
-                             "cannot create the folder: " + ec.message());
+        make_folder(file.parent_path());
         write_ply(file, mesh);
     }
     write_contents_atomically(out, document_text(imported));
