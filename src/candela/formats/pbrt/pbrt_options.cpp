@@ -139,8 +139,11 @@ void translate_film(const RenderOptions& o, int& width, int& height, Json& film,
     if (auto sensor = p.get_string("sensor"); sensor && *sensor != "cie1931")
         ctx.warn(p.find("sensor")->location,
                  fmt::format("sensor \"{}\" is not supported; the CIE 1931 observer is used", *sensor));
-    if (auto m = p.get_float("maxcomponentvalue"); m && std::isfinite(*m))
-        ctx.warn(p.find("maxcomponentvalue")->location, "maxcomponentvalue (clamping samples) is not supported");
+    // pbrt-v4's RGBFilm clamps each sample's sensor values to maxcomponentvalue (infinity: none).
+    if (auto m = p.get_float("maxcomponentvalue")) {
+        if (!(*m > 0)) p.fail(p.find("maxcomponentvalue"), "maxcomponentvalue must be > 0");
+        if (std::isfinite(*m)) film["max_component_value"] = *m;
+    }
     p.bool_or("savefp16", true);  // a matter of the output file only
     p.float_or("diagonal", 35.0);  // only the realistic camera reads it
 }
