@@ -11,7 +11,7 @@
 namespace candela::test {
 
 // A new lobe type must be added to kLobeCases (and thereby to every test that runs over them).
-static_assert(std::variant_size_v<BsdfLobe> == 9, "add the new lobe to kLobeCases");
+static_assert(std::variant_size_v<BsdfLobe> == 10, "add the new lobe to kLobeCases");
 
 // Lobes whose eval() and pdf() are stochastic estimates (materials/layered.h): sample() agrees
 // with them in expectation only, which layered_stat_test.cpp checks; the generic tests check of
@@ -28,7 +28,7 @@ struct LobeCase {
 inline const Color kGoldEta(0.143f, 0.374f, 1.442f);
 inline const Color kGoldK(3.983f, 2.385f, 1.603f);
 
-inline const std::array<LobeCase, 27> kLobeCases = {{
+inline const std::array<LobeCase, 30> kLobeCases = {{
     {"lambertian", LambertianLobe{Color(0.8f, 0.5f, 0.2f)}},
     {"lambertian_white", LambertianLobe{Color(1.0f)}},
     {"mirror", SpecularReflectionLobe{Color(0.9f, 0.6f, 0.3f)}},
@@ -70,6 +70,10 @@ inline const std::array<LobeCase, 27> kLobeCases = {{
      CoatedConductorLobe{CoatInterface{1.33f, TrowbridgeReitz(0.2f)},
                          ConductorLobe{TrowbridgeReitz(0.05f, 0.3f), kGoldEta / 1.33f, kGoldK / 1.33f},
                          Color(0.9f), 0.5f, -0.3f, 10, 1}},
+    // Diffuse transmission: pbrt-v4's default (0.25, 0.25); R + T = 1 (no loss); coloured, T = R / 2.
+    {"diffuse_transmission", DiffuseTransmissionLobe{Color(0.25f), Color(0.25f)}},
+    {"diffuse_transmission_lossless", DiffuseTransmissionLobe{Color(0.3f), Color(0.7f)}},
+    {"diffuse_transmission_coloured", DiffuseTransmissionLobe{Color(0.6f, 0.4f, 0.2f), Color(0.3f, 0.2f, 0.1f)}},
 }};
 
 // The unit direction at polar cosine cos_theta and azimuth phi (local frame, z = normal).

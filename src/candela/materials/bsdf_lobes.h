@@ -5,6 +5,7 @@
 #include "candela/core/variant.h"
 #include "candela/materials/conductor.h"
 #include "candela/materials/dielectric.h"
+#include "candela/materials/diffuse_transmission.h"
 #include "candela/materials/fresnel_specular.h"
 #include "candela/materials/lambertian.h"
 #include "candela/materials/layered.h"
@@ -16,6 +17,6 @@ namespace candela {
 
 using BsdfLobe = Variant<LambertianLobe, SpecularReflectionLobe, FresnelSpecularLobe,
                          SpecularTransmissionLobe, ConductorLobe, DielectricLobe, ThinDielectricLobe,
-                         CoatedDiffuseLobe, CoatedConductorLobe>;
+                         CoatedDiffuseLobe, CoatedConductorLobe, DiffuseTransmissionLobe>;
 
 }  // namespace candela

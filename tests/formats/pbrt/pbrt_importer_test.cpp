@@ -67,6 +67,24 @@ TEST(PbrtImporter, ScreenWindowAndCropWindowPassThrough) {
     EXPECT_EQ(scene.camera.width, 64);
 }
 
+TEST(PbrtImporter, DiffuseTransmissionIsCandelasDiffuseTransmission) {
+    const ImportedScene s = import(std::string("WorldBegin\n") +
+                                   "Material \"diffusetransmission\" \"rgb reflectance\" [0.1 0.2 0.3] "
+                                   "\"float scale\" 2\nShape \"sphere\"\n"
+                                   "Material \"diffusetransmission\"\nShape \"sphere\"\n" + kLight);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+    const auto& shapes = s.document["shapes"];
+    const auto& a = s.document["materials"][shapes[0]["material"].get<std::string>()];
+    EXPECT_EQ(a["type"], "diffuse_transmission");
+    EXPECT_EQ(a["reflectance"], nlohmann::ordered_json::array({0.1, 0.2, 0.3}));
+    EXPECT_EQ(a["transmittance"], 0.25);
+    EXPECT_EQ(a["scale"], 2.0);
+    const auto& b = s.document["materials"][shapes[1]["material"].get<std::string>()];
+    EXPECT_EQ(b["reflectance"], 0.25);
+    EXPECT_FALSE(b.contains("scale"));
+    EXPECT_NO_THROW(load_imported_scene(s, kFile));
+}
+
 TEST(PbrtImporter, MaxComponentValueIsTheFilmsClamp) {
     const auto film_of = [](const std::string& value) {
         return import("Film \"rgb\" \"float maxcomponentvalue\" " + value + "\nWorldBegin\n" + kLight);
