@@ -157,9 +157,9 @@ const BadInput kBadInputs[] = {
     {"missing_key_near_miss.json", kUnknownName, kError, "", 4, 45, "/shapes/0",
      "unknown key \"radus\" (did you mean \"radius\"?)"},
     {"mix_nested.json", kUnknownName, kError, "", 5, 16, "/materials/coated/lobes/1/type",
-     "a mix cannot contain a mix; expected one of: coated_conductor, coated_diffuse, conductor, dielectric, diffuse, hair, mirror, thin_dielectric, transmission"},
+     "a mix cannot contain a mix; expected one of: coated_conductor, coated_diffuse, conductor, dielectric, diffuse, diffuse_transmission, hair, mirror, thin_dielectric, transmission"},
     {"mix_unknown_lobe_type.json", kUnknownName, kError, "", 5, 16, "/materials/coated/lobes/1/type",
-     "unknown material type \"glossy\"; expected one of: coated_conductor, coated_diffuse, conductor, dielectric, diffuse, hair, mirror, thin_dielectric, transmission"},
+     "unknown material type \"glossy\"; expected one of: coated_conductor, coated_diffuse, conductor, dielectric, diffuse, diffuse_transmission, hair, mirror, thin_dielectric, transmission"},
     {"near_miss_material_key.json", kUnknownName, kError, "", 5, 7, "/materials/white",
      "unknown key \"albdo\" (did you mean \"albedo\"?)"},
     {"near_miss_top_level_key.json", kUnknownName, kError, "", 2, 3, "",
@@ -187,7 +187,7 @@ const BadInput kBadInputs[] = {
     {"unknown_light_type.json", kUnknownName, kError, "", 2, 23, "/lights/0/type",
      "unknown light type \"sun\"; expected one of: directional, environment, point, spot"},
     {"unknown_material_type.json", kUnknownName, kError, "", 3, 21, "/materials/red/type",
-     "unknown material type \"glossy\"; expected one of: blend, coated_conductor, coated_diffuse, conductor, dielectric, diffuse, hair, interface, mirror, mix, thin_dielectric, transmission"},
+     "unknown material type \"glossy\"; expected one of: blend, coated_conductor, coated_diffuse, conductor, dielectric, diffuse, diffuse_transmission, hair, interface, mirror, mix, thin_dielectric, transmission"},
     {"unknown_metal.json", kUnknownName, kError, "", 3, 44, "/materials/gold/metal",
      "unknown metal \"Gold\"; expected one of: Ag, Al, Au, Cr, Cu, CuZn, Fe, Ti"},
     {"unknown_shape_type.json", kUnknownName, kError, "", 4, 14, "/shapes/0/type",
@@ -448,8 +448,12 @@ const BadInput kBadInputs[] = {
      "image has zero size (2x0)"},
     {"texture_corrupt.json", kImage, kError, "texture_corrupt.png", 0, 0, "",
      "not a PNG, JPEG, TGA or BMP image, or a corrupt one"},
-    // --- pbrt-v4 scenes, through the importer (15): the parser's syntax errors and pbrt-v4's
+    // --- pbrt-v4 scenes, through the importer (17): the parser's syntax errors and pbrt-v4's
     // semantics (blocks, names, indices), located at the directive or value at fault
+    {"pbrt_binary_scene.pbrt", kPbrt, kError, "", 0, 0, "",
+     "is a binary file, not pbrt-v4 scene text (ill-formed UTF-8 (0x89 at byte 1))"},
+    {"pbrt_gzip_include_error.pbrt", kPbrt, kError, "pbrt_gzip_include_error_geometry.pbrt.gz", 3, 16, "",
+     "unknown parameter type \"flaot\" in \"flaot radius\""},
     {"pbrt_attribute_end_unmatched.pbrt", kPbrt, kError, "", 8, 1, "",
      "AttributeEnd without a matching AttributeBegin"},
     {"pbrt_attribute_unclosed.pbrt", kPbrt, kError, "", 7, 1, "",
@@ -607,9 +611,11 @@ TEST_P(BadInputTest, LoadSceneReportsItWhereItIs) {
         << "message: " << r.message << "\nexpected to contain: " << bad.message;
     // The one line the CLI prints: file:line:col: /pointer: message.
     EXPECT_EQ(r.what, prefix + r.message);
-    // An error inside a referenced file also names the scene key that referenced it.
+    // An error inside a referenced file also names the scene key that referenced it (a pbrt-v4
+    // scene's included file: the Include directive).
     if (*bad.where) {
-        EXPECT_NE(r.message.find(" (referenced by /"), std::string::npos) << r.message;
+        const char* reference = bad.kind == kPbrt ? " (included from " : " (referenced by /";
+        EXPECT_NE(r.message.find(reference), std::string::npos) << r.message;
     }
 }
 

@@ -361,5 +361,70 @@ TEST(SensorWhiteBalance, D65IsNearlyTheIdentity) {
     EXPECT_GT(warm.b, 1.05f * warm.r);
 }
 
+// pbrt-v4's maxcomponentvalue (RGBFilm::AddSample): a sample whose largest sensor value (a
+// component of imaging ratio x XYZ, before the white balance) exceeds the maximum is scaled so
+// that it equals it; one that does not is left as it is, bit for bit.
+
+// The sensor values of an RGB-mode sample: imaging_ratio x xyz_from_rgb x rgb, in double.
+Vec3d sensor_values(const Rgb& c, double ratio) { return srgb_color_space().xyz_from_rgb * to_vec(c) * ratio; }
+
+TEST(SensorClamp, RgbModeScalesTheLargestSensorValueToTheMaximum) {
+    const Rgb c(10.0f, 5.0f, 1.0f);
+    for (float ratio : {1.0f, 2.5f}) {
+        const Vec3d xyz = sensor_values(c, ratio);
+        const double largest = std::max({xyz.x, xyz.y, xyz.z});
+        const Sensor clamped(ratio, 0.0f, 2.0f), free(ratio, 0.0f);
+        const Rgb out = clamped.rgb_to_rgb(c);
+        const double factor = 2.0 / largest;
+        expect_rgb_near(out, free.rgb_to_rgb(c) * float(factor), 8.0, to_vec(c) * double(ratio) * factor);
+        // Its sensor values now peak at the maximum.
+        const Vec3d after = sensor_values(out, 1.0);  // out already holds the ratio
+        EXPECT_NEAR(std::max({after.x, after.y, after.z}), 2.0, 2.0 * 16 * kFloatEps);
+        // Below the maximum nothing changes.
+        const Rgb dim(0.1f, 0.2f, 0.3f);
+        const Rgb kept = clamped.rgb_to_rgb(dim), plain = free.rgb_to_rgb(dim);
+        EXPECT_EQ(std::memcmp(&kept, &plain, sizeof(Rgb)), 0);
+    }
+    // The white balance comes after the clamp: the same factor scales the balanced value.
+    const Sensor balanced(1.0f, 4000.0f), balanced_clamped(1.0f, 4000.0f, 2.0f);
+    const Vec3d xyz = sensor_values(c, 1.0);
+    const double factor = 2.0 / std::max({xyz.x, xyz.y, xyz.z});
+    const Rgb b = balanced.rgb_to_rgb(c);
+    expect_rgb_near(balanced_clamped.rgb_to_rgb(c), b * float(factor), 8.0, to_vec(b) * factor * 2.0);
+}
+
+TEST(SensorClamp, SpectralModeScalesTheLargestSensorValueToTheMaximum) {
+    const Sensor free;
+    for (const auto& [L, w] : some_samples()) {
+        // The sample's sensor values: the XYZ estimate (1/4) sum cie_bar L / p / kCieYIntegral.
+        Vec3d xyz;
+        for (int i = 0; i < kColorChannels; ++i) {
+            if (w.pdf[i] == 0.0f) continue;
+            const int n = dense_index(w.lambda[i]);
+            xyz += Vec3d(kCieX[n], kCieY[n], kCieZ[n]) *
+                   (double(L[i]) / double(w.pdf[i]) / (4.0 * double(kCieYIntegral)));
+        }
+        const double largest = std::max({xyz.x, xyz.y, xyz.z});
+        ASSERT_GT(largest, 0.0);
+        const Rgb plain = free.spectral_to_rgb(L, w);
+        // Half the largest: scaled by 1/2.
+        const Sensor half(1.0f, 0.0f, float(largest / 2));
+        expect_rgb_near(half.spectral_to_rgb(L, w), plain * 0.5f, 16.0, term_magnitudes(L, w) * 0.5);
+        // Twice the largest: the same bits.
+        const Rgb kept = Sensor(1.0f, 0.0f, float(largest * 2)).spectral_to_rgb(L, w);
+        EXPECT_EQ(std::memcmp(&kept, &plain, sizeof(Rgb)), 0);
+    }
+}
+
+TEST(SensorClamp, InfinityIsNoClampAndTheDefault) {
+    EXPECT_FALSE(make_sensor(FilmSettings{}).clamps());
+    const Sensor infinite(1.0f, 0.0f, std::numeric_limits<float>::infinity());
+    EXPECT_FALSE(infinite.clamps());
+    EXPECT_TRUE(Sensor(1.0f, 0.0f, 3.0f).clamps());
+    const Rgb c(1e30f, 2.0f, 0.5f);
+    const Rgb a = infinite.rgb_to_rgb(c), b = Sensor().rgb_to_rgb(c);
+    EXPECT_EQ(std::memcmp(&a, &b, sizeof(Rgb)), 0);
+}
+
 }  // namespace
 }  // namespace candela

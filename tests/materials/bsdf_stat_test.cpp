@@ -19,7 +19,7 @@ namespace {
 constexpr TransportMode kRadiance = TransportMode::kRadiance;
 
 // The chi-square tests in this file, for the Sidak correction.
-constexpr int kChi2Tests = 31;
+constexpr int kChi2Tests = 36;
 
 Bsdf bsdf_of(std::initializer_list<BsdfLobe> lobes) {
     Bsdf b;
@@ -182,6 +182,26 @@ TEST(RoughDielectricChi2, AnisotropicFromInside) {
     expect_rough_sampling_fits_pdf(glass(1.5f, TrowbridgeReitz(0.05f, 0.4f)), direction(-0.3f, 2.0f));
 }
 
+// Diffuse transmission: a cosine lobe on each side, in the proportion of max R to max T.
+Bsdf diffuse_transmission(Color r, Color t) { return bsdf_of({DiffuseTransmissionLobe{r, t}}); }
+
+TEST(DiffuseTransmissionChi2, Equal) {
+    expect_sampling_fits_pdf(diffuse_transmission(Color(0.25f), Color(0.25f)), direction(0.7f, 0.3f), 1.0);
+}
+TEST(DiffuseTransmissionChi2, MostlyTransmittedFromBelow) {
+    expect_sampling_fits_pdf(diffuse_transmission(Color(0.1f), Color(0.8f)), direction(-0.4f, 1.0f), 1.0);
+}
+TEST(DiffuseTransmissionChi2, ColouredGrazing) {
+    expect_sampling_fits_pdf(diffuse_transmission(Color(0.6f, 0.1f, 0.2f), Color(0.1f, 0.5f, 0.3f)),
+                             direction(0.05f, 2.0f), 1.0);
+}
+TEST(DiffuseTransmissionChi2, ReflectionOnly) {
+    expect_sampling_fits_pdf(diffuse_transmission(Color(0.7f), Color(0.0f)), direction(0.5f, 0.0f), 1.0);
+}
+TEST(DiffuseTransmissionChi2, TransmissionOnly) {
+    expect_sampling_fits_pdf(diffuse_transmission(Color(0.0f), Color(0.7f)), direction(-0.9f, 0.0f), 1.0);
+}
+
 TEST(MixChi2, RoughConductorAndLambertian) {
     Bsdf b = bsdf_of({ConductorLobe{TrowbridgeReitz(0.3f), kGoldEta, kGoldK}, LambertianLobe{Color(0.5f)}});
     expect_rough_sampling_fits_pdf(b, direction(0.4f, 1.0f));
@@ -258,6 +278,10 @@ TEST(LobeFurnace, EveryLobeSampledGivesItsDirectionalAlbedo) {
                                return albedo_by_quadrature(l, wo, TransportMode::kImportance);
                            },
                            [](const ThinDielectricLobe&) { return 1.0; },
+                           // R + T whatever wo (the two sides' integrals of cos / pi are 1 each).
+                           [](const DiffuseTransmissionLobe& l) {
+                               return double(l.reflectance[0]) + double(l.transmittance[0]);
+                           },
                            // Skipped above.
                            [](const CoatedDiffuseLobe&) { return kNoClosedForm; },
                            [](const CoatedConductorLobe&) { return kNoClosedForm; },

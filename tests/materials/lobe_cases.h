@@ -28,7 +28,7 @@ struct LobeCase {
 inline const Color kGoldEta(0.143f, 0.374f, 1.442f);
 inline const Color kGoldK(3.983f, 2.385f, 1.603f);
 
-inline const std::array<LobeCase, 29> kLobeCases = {{
+inline const std::array<LobeCase, 32> kLobeCases = {{
     {"lambertian", LambertianLobe{Color(0.8f, 0.5f, 0.2f)}},
     {"lambertian_white", LambertianLobe{Color(1.0f)}},
     {"mirror", SpecularReflectionLobe{Color(0.9f, 0.6f, 0.3f)}},
@@ -73,6 +73,10 @@ inline const std::array<LobeCase, 29> kLobeCases = {{
     // Hair: offset h, eta, sigma_a, beta_m, beta_n, alpha (radians).
     {"hair_white", HairLobe::make(0.3f, 1.55f, Color(0.0f), 0.3f, 0.3f, 0.035f)},
     {"hair_brown", HairLobe::make(-0.7f, 1.55f, Color(0.54f, 0.91f, 1.78f), 0.5f, 0.4f, 0.035f)},
+    // Diffuse transmission: pbrt-v4's default (0.25, 0.25); R + T = 1 (no loss); coloured, T = R / 2.
+    {"diffuse_transmission", DiffuseTransmissionLobe{Color(0.25f), Color(0.25f)}},
+    {"diffuse_transmission_lossless", DiffuseTransmissionLobe{Color(0.3f), Color(0.7f)}},
+    {"diffuse_transmission_coloured", DiffuseTransmissionLobe{Color(0.6f, 0.4f, 0.2f), Color(0.3f, 0.2f, 0.1f)}},
 }};
 
 // The unit direction at polar cosine cos_theta and azimuth phi (local frame, z = normal).

@@ -195,6 +195,49 @@ TEST(LambertianLobe, SamplesLandOnWosSideWithWeightAlbedo) {
     }
 }
 
+// ---- diffuse transmission
+
+TEST(DiffuseTransmissionLobe, EvalIsReflectanceOnWosSideAndTransmittanceOnTheOther) {
+    const DiffuseTransmissionLobe lobe{Color(0.6f, 0.3f, 0.9f), Color(0.2f, 0.1f, 0.3f)};
+    // Sides in proportion to max R = 0.9 and max T = 0.3: reflection 3/4, transmission 1/4.
+    for (float sign : {1.0f, -1.0f}) {
+        Vec3f wo = direction(sign * 0.7f, 1.0f);
+        Vec3f same = direction(sign * 0.4f, 2.5f), other = direction(-sign * 0.4f, 2.5f);
+        EXPECT_EQ(lobe.eval(wo, same, kRadiance), Color(0.6f, 0.3f, 0.9f) * kInvPi);
+        EXPECT_EQ(lobe.eval(wo, other, kRadiance), Color(0.2f, 0.1f, 0.3f) * kInvPi);
+        EXPECT_FLOAT_EQ(lobe.pdf(wo, same), 0.75f * 0.4f * kInvPi);
+        EXPECT_FLOAT_EQ(lobe.pdf(wo, other), 0.25f * 0.4f * kInvPi);
+    }
+    EXPECT_EQ(lobe.albedo(), Color(0.8f, 0.4f, 1.2f));
+    EXPECT_FALSE(lobe.is_delta());
+}
+
+TEST(DiffuseTransmissionLobe, ChoosesTheSideByUcAndWeighsItExactly) {
+    // uc below the reflection probability reflects, above it transmits; the weight f |cos| / pdf
+    // is then R / P(reflect) or T / P(transmit), with no other variance.
+    const DiffuseTransmissionLobe lobe{Color(0.5f), Color(0.5f)};  // R + T = 1: weight 1 always
+    Rng rng(5, 6);
+    int transmitted = 0;
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) {
+        const Vec3f wo = direction(i % 2 ? 0.6f : -0.6f, 0.2f);
+        const float uc = rng.next_float();
+        auto s = lobe.sample(wo, uc, rng.next_vec2f(), kRadiance);
+        ASSERT_TRUE(s);
+        EXPECT_EQ(s->is_transmission, uc >= 0.5f);
+        EXPECT_EQ(s->is_transmission, s->wi.z * wo.z < 0.0f);
+        EXPECT_EQ(s->eta, 1.0f);
+        expect_rgb_near(weight(*s), Color(1.0f), 1e-5f);
+        transmitted += s->is_transmission;
+    }
+    // Half transmit: within 5 binomial standard deviations (sqrt(n / 4) = 71).
+    EXPECT_NEAR(transmitted, n / 2, 5 * 71);
+    // Both black: nothing scatters.
+    const DiffuseTransmissionLobe black{Color(0.0f), Color(0.0f)};
+    EXPECT_FALSE(black.sample(direction(0.5f, 0.0f), 0.3f, Vec2f(0.2f, 0.7f), kRadiance));
+    EXPECT_EQ(black.pdf(direction(0.5f, 0.0f), direction(-0.5f, 1.0f)), 0.0f);
+}
+
 // ---- mirror
 
 TEST(SpecularReflectionLobe, ReflectsMirrorImageWithWeightAlbedo) {

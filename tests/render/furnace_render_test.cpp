@@ -10,6 +10,7 @@
 #include <ostream>
 #include <string>
 
+#include "candela/formats/json/scene_loader.h"
 #include "support/render_moments.h"
 #include "support/test_scenes.h"
 
@@ -129,6 +130,36 @@ INSTANTIATE_TEST_SUITE_P(
                       FurnaceCase{"sphere_bsdf_a05_spectral", Enclosure::kSphere, IntegratorType::kBsdf, true, 0.5f, 0.0f, true},
                       FurnaceCase{"cube_path_a08_spectral", Enclosure::kCube, IntegratorType::kPath, true, 0.8f, 0.0f, true}),
     [](const auto& param_info) { return param_info.param.name; });
+
+// The white furnace of DESIGN.md with a material that transmits: a sphere of diffuse_transmission
+// with R + T = 1 under a uniform environment of radiance 1. It absorbs nothing and emits nothing,
+// so every pixel, on the sphere or beside it, is 1 (paths through it, reflected or transmitted,
+// any number of times, end in the environment); a lost or doubled side would move it. In both
+// colour modes, with the same z-tests as above.
+TEST(WhiteFurnace, ADiffuseTransmissionSphereOfReflectancePlusTransmittanceOneVanishes) {
+    for (const bool spectral : {false, true}) {
+        SCOPED_TRACE(spectral ? "spectral" : "rgb");
+        const std::string json = R"({
+          "integrator": {"type": "path", "max_depth": 1000, "spectral": )" +
+                                 std::string(spectral ? "true" : "false") + R"(},
+          "sampler": {"type": "independent", "spp": 64, "seed": 5},
+          "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 45,
+                     "resolution": [32, 32]},
+          "materials": {"sheet": {"type": "diffuse_transmission", "reflectance": 0.3, "transmittance": 0.7}},
+          "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "sheet"}],
+          "lights": [{"type": "environment", "color": [1, 1, 1]}]
+        })";
+        const Scene scene = load_scene_from_string(json, "diffuse_transmission_furnace.json");
+        test::RenderMoments m = test::render_moments(scene);
+        EXPECT_EQ(m.dropped, 0u);
+        test::ZTestFamily family = test_against(m, 1.0);
+        EXPECT_TRUE(family.passed()) << family.summary();
+        // Power: a 2% bias is rejected.
+        test::ZTestFamily wrong = test_against(m, 1.02);
+        EXPECT_FALSE(wrong.passed()) << wrong.summary();
+        if (!family.passed()) test::write_diagnostic(m, spectral ? "furnace_dt_spectral" : "furnace_dt_rgb");
+    }
+}
 
 }  // namespace
 }  // namespace candela

@@ -3,6 +3,7 @@
 // transfer).
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "candela/core/platform.h"
 #include "candela/film/aov_layers.h"
@@ -77,6 +78,9 @@ struct FilmSettings : DisplayEncoding {
     float iso = 100.0f;
     float exposure_time = 1.0f;  // seconds
     float white_balance = 0.0f;  // 0 or >= kMinWhiteBalanceKelvin
+    // pbrt-v4's RGBFilm maxcomponentvalue: each sample's sensor values (CIE XYZ times the imaging
+    // ratio) are scaled down so that the largest is at most this; infinity (the default): never.
+    float max_component_value = std::numeric_limits<float>::infinity();
     // The AOV layers written beside the image (film.aovs, --aov): none by default.
     AovLayers aovs;
 };

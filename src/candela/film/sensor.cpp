@@ -76,6 +76,17 @@ Sensor::Sensor(float imaging_ratio, float white_balance_kelvin)
     rgb_from_rgb_ = to_float(scaled(rgb_from_sensor_xyz * srgb.xyz_from_rgb, double(imaging_ratio)));
 }
 
-Sensor make_sensor(const FilmSettings& film) { return Sensor(imaging_ratio(film), film.white_balance); }
+Sensor::Sensor(float imaging_ratio, float white_balance_kelvin, float max_component_value)
+    : Sensor(imaging_ratio, white_balance_kelvin) {
+    CANDELA_CHECK(max_component_value > 0.0f);
+    clamps_ = std::isfinite(max_component_value);
+    max_component_value_ = max_component_value;
+    sensor_from_xyz_sum_ = float(double(imaging_ratio) / (kColorChannels * double(kCieYIntegral)));
+    sensor_from_rgb_ = to_float(scaled(srgb_color_space().xyz_from_rgb, double(imaging_ratio)));
+}
+
+Sensor make_sensor(const FilmSettings& film) {
+    return Sensor(imaging_ratio(film), film.white_balance, film.max_component_value);
+}
 
 }  // namespace candela

@@ -16,6 +16,12 @@
 // the white balance, and with the defaults returns its argument untouched, so RGB images do not
 // change by a bit.
 //
+// max_component_value (pbrt-v4's RGBFilm::AddSample) scales a sample's value down so that its
+// largest sensor value, a component of imaging_ratio x XYZ (pbrt-v4's cie1931 sensor RGB, before
+// the white balance and the output colour space), is at most that; in RGB mode the sensor values
+// are those of the sample's XYZ (xyz_from_rgb x rgb). Off (infinite) by default: one branch, and
+// the same bits.
+//
 // A Sensor is built once per render (make_sensor) and used per camera sample.
 #include <cmath>
 
@@ -46,6 +52,8 @@ class Sensor {
     Sensor() : Sensor(1.0f, 0.0f) {}
     // imaging_ratio > 0 and finite; white_balance_kelvin 0 (none) or >= 1000.
     Sensor(float imaging_ratio, float white_balance_kelvin);
+    // max_component_value > 0; infinity: no clamp.
+    Sensor(float imaging_ratio, float white_balance_kelvin, float max_component_value);
 
     // Spectral mode: the linear sRGB value of a camera sample of radiance L at wavelengths w.
     CANDELA_HD Rgb spectral_to_rgb(const Color& L, const SampledWavelengths& w) const {
@@ -61,29 +69,50 @@ class Sensor {
             const float weight = L[i] / w.pdf[i];
             xyz += Vec3f(kCieX[n], kCieY[n], kCieZ[n]) * weight;
         }
-        return rgb_from_xyz_sum_ * xyz;
+        const Rgb rgb = rgb_from_xyz_sum_ * xyz;
+        if (!clamps_) return rgb;
+        // The colour maps are linear: scaling the output scales the sensor values alike.
+        return rgb * clamp_factor(max_component(xyz) * sensor_from_xyz_sum_);
     }
 
     // RGB mode: the path's linear sRGB with the imaging ratio and the white balance applied;
     // exactly `rgb` (the same bits) when the ratio is 1 and there is no white balance.
     CANDELA_HD Rgb rgb_to_rgb(const Rgb& rgb) const {
-        if (!white_balanced_) return imaging_ratio_ == 1.0f ? rgb : rgb * imaging_ratio_;
-        return rgb_from_rgb_ * Vec3f(rgb.r, rgb.g, rgb.b);
+        if (clamps_)
+            return unclamped_rgb_to_rgb(rgb) *
+                   clamp_factor((sensor_from_rgb_ * Vec3f(rgb.r, rgb.g, rgb.b)).max_component());
+        return unclamped_rgb_to_rgb(rgb);
+    }
+
+    // The factor pbrt-v4's film scales a sample by: max_component_value / the largest of its
+    // sensor values, or 1 when that is no more than max_component_value.
+    CANDELA_HD float clamp_factor(float largest) const {
+        return largest > max_component_value_ ? max_component_value_ / largest : 1.0f;
     }
 
     CANDELA_HD float imaging_ratio() const { return imaging_ratio_; }
     CANDELA_HD bool white_balanced() const { return white_balanced_; }
+    CANDELA_HD bool clamps() const { return clamps_; }
 
   private:
+    CANDELA_HD Rgb unclamped_rgb_to_rgb(const Rgb& rgb) const {
+        if (!white_balanced_) return imaging_ratio_ == 1.0f ? rgb : rgb * imaging_ratio_;
+        return rgb_from_rgb_ * Vec3f(rgb.r, rgb.g, rgb.b);
+    }
+
     float imaging_ratio_ = 1.0f;
     bool white_balanced_ = false;
     // rgb_from_xyz * white balance * imaging_ratio / (4 kCieYIntegral): from the summed XYZ.
     SensorMatrix rgb_from_xyz_sum_;
     // rgb_from_xyz * white balance * xyz_from_rgb * imaging_ratio: RGB mode with white balance.
     SensorMatrix rgb_from_rgb_;
+    bool clamps_ = false;  // max_component_value_ is finite
+    float max_component_value_ = 0.0f;
+    float sensor_from_xyz_sum_ = 0.0f;  // imaging_ratio / (4 kCieYIntegral): the sum's sensor values
+    SensorMatrix sensor_from_rgb_;      // xyz_from_rgb * imaging_ratio: RGB mode's sensor values
 };
 
-// The sensor of a render's film settings (iso, exposure_time, white_balance).
+// The sensor of a render's film settings (iso, exposure_time, white_balance, max_component_value).
 Sensor make_sensor(const FilmSettings& film);
 
 // The chromaticity the white balance adapts from, for a white_balance of `kelvin`: that of the

@@ -8,9 +8,14 @@
 namespace candela {
 
 bool is_pbrt_scene_file(const std::filesystem::path& file) {
-    std::string ext = file.extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return ext == ".pbrt";
+    // "scene.pbrt", or "scene.pbrt.gz" (gzip-compressed, as pbrt-v4 reads it).
+    const auto lower_extension = [](const std::filesystem::path& p) {
+        std::string ext = p.extension().string();
+        for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+        return ext;
+    };
+    const std::string ext = lower_extension(file);
+    return ext == ".pbrt" || (ext == ".gz" && lower_extension(file.stem()) == ".pbrt");
 }
 
 Scene load_scene_file(const std::filesystem::path& file, const LoadOptions& options) {

@@ -1,5 +1,5 @@
 #pragma once
-// Loads a scene file of any format candela reads, chosen by extension: `.pbrt` is pbrt-v4's
+// Loads a scene file of any format candela reads, chosen by extension: `.pbrt` (or `.pbrt.gz`) is pbrt-v4's
 // (formats/pbrt), anything else candela's JSON (formats/json).
 #include <filesystem>
 

@@ -5,6 +5,7 @@
 #include "candela/core/variant.h"
 #include "candela/materials/conductor.h"
 #include "candela/materials/dielectric.h"
+#include "candela/materials/diffuse_transmission.h"
 #include "candela/materials/fresnel_specular.h"
 #include "candela/materials/hair.h"
 #include "candela/materials/lambertian.h"
@@ -17,6 +18,6 @@ namespace candela {
 
 using BsdfLobe = Variant<LambertianLobe, SpecularReflectionLobe, FresnelSpecularLobe,
                          SpecularTransmissionLobe, ConductorLobe, DielectricLobe, ThinDielectricLobe,
-                         CoatedDiffuseLobe, CoatedConductorLobe, HairLobe>;
+                         CoatedDiffuseLobe, CoatedConductorLobe, HairLobe, DiffuseTransmissionLobe>;
 
 }  // namespace candela

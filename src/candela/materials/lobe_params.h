@@ -358,8 +358,30 @@ struct HairParams {
 };
 static_assert(LobeParamsType<HairParams>);
 
+// `diffuse_transmission`: Lambertian reflection `reflectance` and transmission `transmittance`,
+// each times `scale` and clamped to [0, 1] (pbrt-v4's DiffuseTransmissionMaterial).
+struct DiffuseTransmissionParams {
+    ColorParam reflectance{Rgb(0.25f)};
+    ColorParam transmittance{Rgb(0.25f)};
+    float scale = 1.0f;
+
+    CANDELA_HD BsdfLobe lobe(const TextureSet& t, const TextureContext& ctx) const {
+        return DiffuseTransmissionLobe{clamp_channels(t.eval(reflectance, ctx) * scale, 0.0f, 1.0f),
+                                       clamp_channels(t.eval(transmittance, ctx) * scale, 0.0f, 1.0f)};
+    }
+    CANDELA_HD bool is_textured() const { return reflectance.is_textured() || transmittance.is_textured(); }
+    // Passes each colour parameter to f (make_material prepares them for spectral mode).
+    template <class F>
+    void for_each_color(F&& f) {
+        f(reflectance);
+        f(transmittance);
+    }
+};
+static_assert(LobeParamsType<DiffuseTransmissionParams>);
+
 using LobeParams = Variant<DiffuseParams, MirrorParams, DielectricParams, TransmissionParams,
                            ConductorParams, ConductorReflectanceParams, RoughDielectricParams,
-                           ThinDielectricParams, CoatedDiffuseParams, CoatedConductorParams, HairParams>;
+                           ThinDielectricParams, CoatedDiffuseParams, CoatedConductorParams,
+                           HairParams, DiffuseTransmissionParams>;
 
 }  // namespace candela

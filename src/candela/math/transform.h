@@ -1,5 +1,5 @@
 #pragma once
-// Affine transforms of the scene file, kept in double (they are applied once, at load time).
+// Transforms of the scene file (affine, or projective where a format allows), kept in double (they are applied once, at load time).
 // Points and vectors transform by the matrix, normals by its inverse transpose.
 #include <array>
 
@@ -41,6 +41,9 @@ class Transform {
     // or not finite.
     bool invertible() const;
     bool is_identity() const;
+    // True when the last row is [0, 0, 0, 1]; otherwise the transform is projective (points are
+    // divided by w, vectors and normals take the upper 3x3 of the matrix and of its inverse).
+    bool is_affine() const { return m_[3][0] == 0.0 && m_[3][1] == 0.0 && m_[3][2] == 0.0 && m_[3][3] == 1.0; }
 
     const Matrix& matrix() const { return m_; }
 

@@ -110,3 +110,9 @@ write("exr_truncated_data.exr", scanlines(4, 2, 1))
 # 8 KiB that would have had us allocate 3 GiB before finding the data missing.
 head, _, _ = exr(16384, 16384, 3, b"", b"")
 write("exr_absurd_size.exr", head + b"".join(struct.pack("<Q", len(head) + 8 * 1024 + 8 * i) for i in range(1024)))
+
+# --- pbrt-v4: a binary file given as the scene; a gzip-compressed include with an error on line 3
+write("pbrt_binary_scene.pbrt", b"\x89PNG\r\n\x1a\n" + bytes(range(64)))
+write("pbrt_gzip_include_error_geometry.pbrt.gz",
+      gzip.compress(b'# gzip-compressed: a sphere with a misspelt type on line 3.\nAttributeBegin\n'
+                    b'Shape "sphere" "flaot radius" 1\nAttributeEnd\n', mtime=0))

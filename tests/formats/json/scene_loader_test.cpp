@@ -265,7 +265,7 @@ TEST(SceneLoader, UnknownKeysInEverySectionAreErrors) {
               "unknown key \"tone_map\" (did you mean \"tonemap\"?)");
     EXPECT_EQ(load_error(R"({"film": {"sensor": "cie1931"}})").message(),
               "unknown key \"sensor\"; expected one of: aovs, crop_window, exposure, exposure_time, filename, filter, gamma, "
-              "iso, tonemap, transfer, white_balance");
+              "iso, max_component_value, tonemap, transfer, white_balance");
     // A misspelt section is reported before anything that depends on it.
     SceneError e = load_error(R"({"shapes": [{"type": "sphere", "center": [0, 0, 0],
                                               "radius": 1, "material": "m"}],

@@ -22,6 +22,29 @@ using test::only_lobe;
 
 TextureContext at(float u, float v) { return TextureContext{Vec2f(u, v), Vec3f(0.0f)}; }
 
+// ---- diffuse_transmission
+
+TEST(SceneMaterials, DiffuseTransmissionReadsReflectanceTransmittanceAndScale) {
+    // pbrt-v4's defaults: 0.25 each.
+    const auto d = only_lobe<DiffuseTransmissionLobe>(load_material(R"({"type": "diffuse_transmission"})"));
+    EXPECT_EQ(d.reflectance, Color(0.25f));
+    EXPECT_EQ(d.transmittance, Color(0.25f));
+    const auto a = only_lobe<DiffuseTransmissionLobe>(load_material(
+        R"({"type": "diffuse_transmission", "reflectance": [0.2, 0.4, 0.6], "transmittance": 0.3})"));
+    EXPECT_EQ(a.reflectance, Color(0.2f, 0.4f, 0.6f));
+    EXPECT_EQ(a.transmittance, Color(0.3f));
+    // `scale` multiplies both, and each is clamped to 1 after (pbrt-v4's GetBxDF).
+    const auto s = only_lobe<DiffuseTransmissionLobe>(load_material(
+        R"({"type": "diffuse_transmission", "reflectance": [0.2, 0.4, 0.6], "transmittance": 0.3, "scale": 2})"));
+    EXPECT_EQ(s.reflectance, Color(0.4f, 0.8f, 1.0f));
+    EXPECT_EQ(s.transmittance, Color(0.6f));
+    EXPECT_NE(material_error(R"({"type": "diffuse_transmission", "transmittance": 1.5})").message().find(
+                  "expected"),
+              std::string::npos);
+    EXPECT_NE(material_error(R"({"type": "diffuse_transmission", "scale": -1})").message().find(">= 0"),
+              std::string::npos);
+}
+
 // ---- conductor
 
 TEST(SceneMaterials, ConductorEtaKAndRoughnessAreRead) {

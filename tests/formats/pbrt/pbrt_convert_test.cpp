@@ -6,6 +6,8 @@
 
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -93,6 +95,29 @@ INSTANTIATE_TEST_SUITE_P(PbrtV4Scenes, ConvertRoundTrip, testing::ValuesIn(kScen
                                  if (ch == '-') ch = '_';
                              return n;
                          });
+
+// -o DIR/x.json makes a missing DIR (nested too) whether or not the scene has meshes to put there.
+TEST(Convert, MakesTheMissingOutputFolderWithOrWithoutMeshes) {
+    const fs::path dir = fs::path(CANDELA_TEST_BINARY_DIR) / "pbrt_convert_folders";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string head = "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+                             "LightSource \"point\" \"rgb I\" [1 1 1]\n";
+    const std::pair<const char*, std::string> scenes[] = {
+        {"spheres", head + "Shape \"sphere\"\n"},
+        {"meshes", head + "Shape \"trianglemesh\" \"point3 P\" [0 0 0  1 0 0  0 1 0] \"integer indices\" [0 1 2]\n"},
+    };
+    for (const auto& [name, text] : scenes) {
+        SCOPED_TRACE(name);
+        const fs::path in = dir / (std::string(name) + ".pbrt");
+        std::ofstream(in) << text;
+        const fs::path out = dir / name / "new" / "scene.json";
+        const pbrt::ConvertResult converted = pbrt::convert_pbrt_scene(in, out);
+        EXPECT_TRUE(fs::is_regular_file(out));
+        EXPECT_EQ(converted.mesh_files, std::string(name) == "meshes" ? 1u : 0u);
+        EXPECT_NO_THROW(load_scene(out));
+    }
+}
 
 }  // namespace
 }  // namespace candela

@@ -67,6 +67,39 @@ TEST(PbrtImporter, ScreenWindowAndCropWindowPassThrough) {
     EXPECT_EQ(scene.camera.width, 64);
 }
 
+TEST(PbrtImporter, DiffuseTransmissionIsCandelasDiffuseTransmission) {
+    const ImportedScene s = import(std::string("WorldBegin\n") +
+                                   "Material \"diffusetransmission\" \"rgb reflectance\" [0.1 0.2 0.3] "
+                                   "\"float scale\" 2\nShape \"sphere\"\n"
+                                   "Material \"diffusetransmission\"\nShape \"sphere\"\n" + kLight);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+    const auto& shapes = s.document["shapes"];
+    const auto& a = s.document["materials"][shapes[0]["material"].get<std::string>()];
+    EXPECT_EQ(a["type"], "diffuse_transmission");
+    EXPECT_EQ(a["reflectance"], nlohmann::ordered_json::array({0.1, 0.2, 0.3}));
+    EXPECT_EQ(a["transmittance"], 0.25);
+    EXPECT_EQ(a["scale"], 2.0);
+    const auto& b = s.document["materials"][shapes[1]["material"].get<std::string>()];
+    EXPECT_EQ(b["reflectance"], 0.25);
+    EXPECT_FALSE(b.contains("scale"));
+    EXPECT_NO_THROW(load_imported_scene(s, kFile));
+}
+
+TEST(PbrtImporter, MaxComponentValueIsTheFilmsClamp) {
+    const auto film_of = [](const std::string& value) {
+        return import("Film \"rgb\" \"float maxcomponentvalue\" " + value + "\nWorldBegin\n" + kLight);
+    };
+    const ImportedScene s = film_of("4.5");
+    EXPECT_EQ(s.document["film"]["max_component_value"], 4.5);
+    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_EQ(load_imported_scene(s, kFile).film.max_component_value, 4.5f);
+    // pbrt-v4's default, infinity, writes nothing.
+    EXPECT_FALSE(import(std::string("WorldBegin\n") + kLight).document["film"].contains("max_component_value"));
+    EXPECT_NE(error_of("Film \"rgb\" \"float maxcomponentvalue\" 0\nWorldBegin\n" + std::string(kLight))
+                  .find("maxcomponentvalue must be > 0"),
+              std::string::npos);
+}
+
 TEST(PbrtImporter, TransformsApplyInObjectSpaceFirst) {
     // pbrt post-multiplies the CTM: the directive written last acts on the object first.
     const ImportedScene s = import(std::string("WorldBegin\nTranslate 1 2 3\nScale 2 2 2\n"

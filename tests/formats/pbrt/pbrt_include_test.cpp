@@ -128,6 +128,72 @@ TEST(PbrtInclude, NestingIsLimited) {
               "data/pbrt/chain/2.pbrt:1:1) (included from data/pbrt/chain/1.pbrt:1:1)");
 }
 
+TEST(PbrtInclude, GzipFilesAreReadInflatedWhateverTheirName) {
+    RecordingTarget t;
+    parse_file("data/pbrt/gzip_main.pbrt", t);
+    EXPECT_EQ(t.log, std::vector<std::string>({"Camera perspective @2:1", "WorldBegin @3:1", "Shape trianglemesh @2:1",
+                                               "Shape disk {float radius: 2} @1:1", "LightSource point @3:1",
+                                               "Shape sphere @6:1"}));
+    ASSERT_EQ(t.locations.size(), 6u);
+    EXPECT_EQ(describe(t.locations[3]),
+              "data/pbrt/geometry/nested/leaf.pbrt:1:1 (included from data/pbrt/geometry/gzipped.pbrt.gz:3:5) "
+              "(included from data/pbrt/gzip_main.pbrt:4:1)");
+    // geometry/gzipped_unnamed.pbrt is gzip data under a plain name.
+    EXPECT_EQ(describe(t.locations[4]),
+              "data/pbrt/geometry/gzipped_unnamed.pbrt:3:1 (included from data/pbrt/gzip_main.pbrt:5:1)");
+    // Inflated in chunks as small as a byte, the tokens are the same.
+    for (size_t chunk : {1, 3}) {
+        ParseOptions options;
+        options.chunk_size = chunk;
+        RecordingTarget small;
+        parse_file("data/pbrt/gzip_main.pbrt", small, options);
+        EXPECT_EQ(small.log, t.log) << chunk;
+    }
+}
+
+TEST(PbrtInclude, AGzipMainFileIsReadInflated) {
+    RecordingTarget t;
+    parse_file("data/pbrt/gzip_whole.pbrt.gz", t);
+    EXPECT_EQ(t.log, std::vector<std::string>({"Camera perspective @2:1", "WorldBegin @3:1", "Shape sphere @4:1"}));
+}
+
+TEST(PbrtInclude, ErrorsInAGzipFileNameItsLine) {
+    EXPECT_EQ(error_of_file("data/pbrt/gzip_error_main.pbrt"),
+              "data/pbrt/geometry/gzipped_bad.pbrt.gz:3:29: \"float radius\": expected a number, got the string "
+              "\"oops\" (included from data/pbrt/gzip_error_main.pbrt:3:1)");
+    EXPECT_EQ(error_of_file("data/pbrt/gzip_corrupt_main.pbrt"),
+              "data/pbrt/geometry/gzipped_truncated.pbrt.gz: the gzip data ends before the stream does (file "
+              "truncated?) (included from data/pbrt/gzip_corrupt_main.pbrt:3:1)");
+}
+
+TEST(PbrtInclude, ABinaryFileIsOneErrorAtTheFileNotItsBytesAsWords) {
+    EXPECT_EQ(error_of_file("data/pbrt/binary_main.pbrt"),
+              "data/pbrt/binary_main.pbrt: is a binary file, not pbrt-v4 scene text (a control byte 0x00 at byte 6)");
+    EXPECT_EQ(error_of_file("data/pbrt/binary_include_main.pbrt"),
+              "data/pbrt/geometry/binary.pbrt: is a binary file, not pbrt-v4 scene text (ill-formed UTF-8 (0x89 at "
+              "byte 1)) (included from data/pbrt/binary_include_main.pbrt:3:1)");
+    EXPECT_EQ(error_of_file("data/pbrt/bad_utf8_main.pbrt"),
+              "data/pbrt/bad_utf8_main.pbrt: is a binary file, not pbrt-v4 scene text (ill-formed UTF-8 (0xC3 at byte "
+              "17))");
+    // The same with the text in memory and in chunks of a byte.
+    ParseOptions options;
+    options.chunk_size = 1;
+    RecordingTarget t;
+    try {
+        parse_string(std::string("Shape \"sphere\"\n\x01", 16), "memory.pbrt", t, options);
+        ADD_FAILURE() << "expected a SceneError";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "memory.pbrt: is a binary file, not pbrt-v4 scene text (a control byte 0x01 at byte 16)");
+    }
+}
+
+TEST(PbrtInclude, ALatin1CommentIsNotBinary) {
+    RecordingTarget t;
+    parse_file("data/pbrt/latin1_comment.pbrt", t);
+    EXPECT_EQ(t.log, std::vector<std::string>({"Shape sphere @2:1"}));
+}
+
 // The pbrt-v4 cases of the bad-input corpus give these messages from the parser (the CLI's
 // checks of them live with the other bad inputs in tests/app/bad_inputs_test.cpp).
 TEST(PbrtInclude, BadInputCorpusMessages) {

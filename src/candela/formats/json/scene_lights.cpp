@@ -72,7 +72,7 @@ EnvironmentSettings read_environment(JsonCursor c, const std::filesystem::path& 
         c.fail("an environment needs \"file\" (an .hdr or .exr image) or \"color\"");
     EnvironmentSettings env;
     if (auto v = c.get("scale")) env.scale = v->number_f(Bounds::at_least(0));
-    if (auto v = c.get("transform")) env.to_world = read_transform(*v);
+    if (auto v = c.get("transform")) env.to_world = read_transform(*v, MatrixRows::kProjective);
     if (auto v = c.get("sampling")) {
         env.sampling = v->choice("environment sampling", kEnvironmentSamplingNames) == "uniform"
                            ? EnvironmentSampling::kUniform

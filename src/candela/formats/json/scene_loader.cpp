@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <system_error>
@@ -247,7 +248,7 @@ void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget* budget) {
 }
 
 // The sensor's keys (film/sensor.h): iso and exposure_time give the imaging ratio, which must
-// stay a positive float; white_balance is 0 or a temperature.
+// stay a positive float; white_balance is 0 or a temperature; max_component_value > 0.
 void read_sensor(JsonCursor& c, FilmSettings& film) {
     std::optional<JsonCursor> last;  // where an imaging ratio out of float range is reported
     if (auto v = c.get("iso")) {
@@ -266,6 +267,13 @@ void read_sensor(JsonCursor& c, FilmSettings& film) {
         film.white_balance = v->number_f(Bounds::at_least(0));
         if (film.white_balance != 0.0f && film.white_balance < kMinWhiteBalanceKelvin)
             v->fail_expected(fmt::format("0 (no white balance) or a temperature >= {} (kelvin)", kMinWhiteBalanceKelvin));
+    }
+    // pbrt-v4's maxcomponentvalue; a number beyond float range is no clamp at all.
+    if (auto v = c.get("max_component_value")) {
+        const double m = v->number(Bounds::above(0));
+        film.max_component_value = m < double(std::numeric_limits<float>::max())
+                                       ? float(m)
+                                       : std::numeric_limits<float>::infinity();
     }
 }
 

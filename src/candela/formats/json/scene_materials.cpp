@@ -17,12 +17,13 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 12> kMaterialTypes = {
-    "blend", "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "hair", "interface",
-    "mirror", "mix", "thin_dielectric", "transmission"};
+constexpr std::array<std::string_view, 14> kMaterialTypes = {
+    "blend", "coated_conductor", "coated_diffuse", "conductor", "diffuse", "diffuse_transmission", "dielectric",
+    "hair", "interface", "mirror", "mix", "thin_dielectric", "transmission"};
 // The types a `mix` may combine: every material type but `mix` itself.
-constexpr std::array<std::string_view, 9> kLobeMaterialTypes = {
-    "coated_conductor", "coated_diffuse", "conductor", "diffuse", "dielectric", "hair", "mirror",
+constexpr std::array<std::string_view, 10> kLobeMaterialTypes = {
+    "coated_conductor", "coated_diffuse", "conductor", "diffuse", "diffuse_transmission", "dielectric", "hair",
+    "mirror",
     "thin_dielectric", "transmission"};
 constexpr std::array<std::string_view, 2> kFresnelNames = {"exact", "schlick"};
 constexpr std::array<std::string_view, 2> kNormalMapConventions = {"opengl", "directx"};
@@ -182,6 +183,13 @@ LobeParams read_lobe(JsonCursor& c, std::string_view type, Scene& scene) {
     if (type == "diffuse") {
         DiffuseParams p;
         if (auto v = c.get("albedo")) p.albedo = read_color_param(*v, scene, kReflectance);
+        return p;
+    }
+    if (type == "diffuse_transmission") {
+        DiffuseTransmissionParams p;
+        if (auto v = c.get("reflectance")) p.reflectance = read_color_param(*v, scene, kReflectance);
+        if (auto v = c.get("transmittance")) p.transmittance = read_color_param(*v, scene, kReflectance);
+        if (auto v = c.get("scale")) p.scale = v->number_f(Bounds::at_least(0));
         return p;
     }
     if (type == "mirror") {

@@ -23,8 +23,11 @@
 namespace candela {
 
 // `transform`: an array of one-key steps (translate, scale, rotate, matrix), the first listed
-// applied first.
-Transform read_transform(const JsonCursor& steps);
+// applied first. A matrix's last row must be [0, 0, 0, 1] unless `rows` allows a projective one
+// (meshes and environment lights, which pbrt-v4's scenes give such matrices: points are divided by
+// w, directions take the upper 3x3, as in pbrt-v4).
+enum class MatrixRows { kAffine, kProjective };
+Transform read_transform(const JsonCursor& steps, MatrixRows rows = MatrixRows::kAffine);
 
 // `film.filter`: a name (box, tent, gaussian, smallpt) or an object {"type": ..., parameters}.
 FilterSettings read_filter(JsonCursor filter);

@@ -229,7 +229,7 @@ void read_shape(JsonCursor c, const ShapeSection& section, Scene& scene, MemoryB
 
     Transform to_world;
     std::optional<JsonCursor> transform = c.get("transform");
-    if (transform) to_world = read_transform(*transform);
+    if (transform) to_world = read_transform(*transform, MatrixRows::kProjective);
     TriangleMesh mesh;
     if (type == "quad") {
         std::optional<JsonCursor> edge2 = c.get("edge2");

@@ -36,11 +36,20 @@ Transform read_rotate(JsonCursor c) {
     return Transform::rotate(axis, angle_degrees * (kPiD / 180.0));
 }
 
-Transform read_matrix(const JsonCursor& c) {
+Transform read_matrix(const JsonCursor& c, MatrixRows rows) {
     std::vector<JsonCursor> e = c.elements(16, "an array of 16 numbers (a 4x4 matrix, row by row)");
     Transform::Matrix m{};
     for (size_t i = 0; i < 16; ++i) m[i / 4][i % 4] = e[i].number();
-    // Only affine transforms keep straight lines and the winding rule meaningful.
+    // Only affine transforms keep spheres, disks, instances and media what they are; a mesh takes
+    // a projective one vertex by vertex (its triangles stay triangles), an environment its
+    // directions by the upper 3x3 (pbrt-v4's, whose scenes have such matrices).
+    if (rows == MatrixRows::kProjective) {
+        Transform t(m);
+        if (!t.invertible())
+            c.fail(fmt::format("the matrix is singular (determinant {}); a transform must be invertible",
+                               t.determinant()));
+        return t;
+    }
     for (size_t col = 0; col < 4; ++col) {
         double want = col == 3 ? 1.0 : 0.0;
         if (m[3][col] != want)
@@ -58,7 +67,7 @@ Transform read_matrix(const JsonCursor& c) {
     return t;
 }
 
-Transform read_step(JsonCursor step) {
+Transform read_step(JsonCursor step, MatrixRows rows) {
     std::vector<std::string> keys = step.keys();
     if (keys.empty())
         step.fail_expected(
@@ -75,16 +84,16 @@ Transform read_step(JsonCursor step) {
     if (keys[0] == "translate") return Transform::translate(value.vec3());
     if (keys[0] == "scale") return read_scale(value);
     if (keys[0] == "rotate") return read_rotate(value);
-    return read_matrix(value);
+    return read_matrix(value, rows);
 }
 
 }  // namespace
 
-Transform read_transform(const JsonCursor& steps) {
+Transform read_transform(const JsonCursor& steps, MatrixRows rows) {
     if (!steps.is_array())
         steps.fail_expected("an array of transform steps, e.g. [{\"translate\": [0, 1, 0]}]");
     Transform total;
-    for (const JsonCursor& step : steps.elements()) total = read_step(step) * total;
+    for (const JsonCursor& step : steps.elements()) total = read_step(step, rows) * total;
     // Each step is invertible, but their product may still underflow (two scales of 1e-200).
     if (!total.invertible())
         steps.fail(fmt::format("the transform is singular (determinant {})", total.determinant()));

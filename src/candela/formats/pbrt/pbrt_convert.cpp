@@ -43,14 +43,17 @@ ConvertResult convert_pbrt_scene(const fs::path& in, const fs::path& out) {
     ConvertResult result;
     result.warnings = load_imported_scene(imported, in).warnings;
     const fs::path out_folder = out.parent_path().empty() ? fs::path(".") : out.parent_path();
+    // The output's folder is made when it is missing, whether or not meshes go into it.
+    const auto make_folder = [](const fs::path& folder) {
+        std::error_code ec;
+        fs::create_directories(folder, ec);
+        if (ec) throw SceneError(SourceLocation{folder.string(), 0, 0, ""}, "cannot create the folder: " + ec.message());
+    };
+    make_folder(out_folder);
     rebase_file_names(imported.document, in.parent_path().empty() ? fs::path(".") : in.parent_path(), out_folder,
                       imported);
-    const auto folder_for = [](const fs::path& file) {
-        std::error_code ec;
-        fs::create_directories(file.parent_path(), ec);
-        if (ec)
-            throw SceneError(SourceLocation{file.parent_path().string(), 0, 0, ""},
-                             "cannot create the folder: " + ec.message());
+    const auto folder_for = [&](const fs::path& file) {
+        make_folder(file.parent_path());
         return file;
     };
     for (const auto& [name, mesh] : imported.meshes) write_ply(folder_for(out_folder / name), mesh);

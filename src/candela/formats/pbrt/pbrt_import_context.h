@@ -135,12 +135,20 @@ void add_media(const GraphicsState& state, Json& shape);
 // current at the directive.
 void translate_medium(const std::string& name, const Params& params, const Transform& to_world, ImportContext& ctx);
 
-// pbrt_lights.cpp: a LightSource into the document's lights.
+// pbrt_lights.cpp: a LightSource into the document's lights. `camera_position` (world space) is
+// the origin of pbrt-v4's render space (pbrt_directions).
 void translate_light(const std::string& type, const Params& params, const Transform& light_to_world,
-                     ImportContext& ctx);
+                     const Vec3d& camera_position, ImportContext& ctx);
 
 // A JSON pointer's reference token for `name` (RFC 6901: ~ and / escaped).
 std::string pointer_token(const std::string& name);
+
+// pbrt-v4 renders in "camera-world" space by default: the world translated to put the camera at
+// the origin (render = Translate(-camera) x world). A projective transform t (last row not 0 0 0 1)
+// moves points the same there (the divide comes first), but directions by the upper 3x3 of
+// Translate(-camera) x t, which is not t's. Returns that transform, whose directions (and inverse
+// directions) are pbrt-v4's; t itself when t is affine.
+Transform pbrt_directions(const Transform& t, const Vec3d& camera_position);
 
 // A transform in candela's JSON syntax: [{"matrix": [16 numbers row by row]}], or [] for identity.
 Json transform_json(const Transform& t);

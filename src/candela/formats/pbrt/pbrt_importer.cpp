@@ -76,6 +76,10 @@ bool ImportContext::is_interface(const std::string& material) {
     return it != materials.end() && it->value("type", "") == "interface";
 }
 
+Transform pbrt_directions(const Transform& t, const Vec3d& camera_position) {
+    return t.is_affine() ? t : Transform::translate(-camera_position) * t;
+}
+
 Json transform_json(const Transform& t) {
     if (t.is_identity()) return Json::array();
     Json m = Json::array();
@@ -317,7 +321,7 @@ class Importer final : public Target {
         if (!state_.outside_medium.empty() && !ctx_.has_medium(state_.outside_medium))
             fail(at, fmt::format("LightSource: medium \"{}\" is not defined (MakeNamedMedium must come first)",
                                  state_.outside_medium));
-        translate_light(type, p, state_.ctm, ctx_);
+        translate_light(type, p, state_.ctm, options_.camera_from_world.inverse().apply_point(Vec3d(0, 0, 0)), ctx_);
         finish(p);
     }
     void area_light_source(const std::string& type, ParameterList params, const Location& at) override {

@@ -28,7 +28,11 @@ void scale_and_power(const Params& p, Json& light) {
 
 }  // namespace
 
-void translate_light(const std::string& type, const Params& p, const Transform& to_world, ImportContext& ctx) {
+void translate_light(const std::string& type, const Params& p, const Transform& to_world,
+                     const Vec3d& camera_position, ImportContext& ctx) {
+    // Positions by to_world (with the divide by w of a projective one), directions as pbrt-v4
+    // moves them in its render space.
+    const Transform directions = pbrt_directions(to_world, camera_position);
     Json light;
     if (type == "point") {
         const Vec3d from = p.get_point3("from").value_or(Vec3d(0, 0, 0));
@@ -43,7 +47,9 @@ void translate_light(const std::string& type, const Params& p, const Transform& 
         if (!(delta >= 0)) p.fail(p.find("conedeltaangle"), "spot: conedeltaangle must be >= 0");
         light = Json{{"type", "spot"},
                      {"position", vec_json(to_world.apply_point(from))},
-                     {"look_at", vec_json(to_world.apply_point(to))},
+                     {"look_at", vec_json(to_world.is_affine() ? to_world.apply_point(to)
+                                                               : to_world.apply_point(from) +
+                                                                     directions.apply_vector(to - from))},
                      {"intensity", light_colour(p, "I")},
                      {"cone_angle", cone},
                      {"cone_delta", std::min(delta, cone)}};
@@ -55,7 +61,7 @@ void translate_light(const std::string& type, const Params& p, const Transform& 
     } else if (type == "distant") {
         const Vec3d from = p.get_point3("from").value_or(Vec3d(0, 0, 0));
         const Vec3d to = p.get_point3("to").value_or(Vec3d(0, 0, 1));
-        const Vec3d dir = to_world.apply_vector(to - from);
+        const Vec3d dir = directions.apply_vector(to - from);
         if (!(length(dir) > 0)) p.fail(p.find("to"), "distant: \"from\" and \"to\" are the same point");
         light = Json{{"type", "directional"}, {"direction", vec_json(dir)}, {"irradiance", light_colour(p, "L")}};
         double scale = p.float_or("scale", 1.0);
@@ -75,7 +81,7 @@ void translate_light(const std::string& type, const Params& p, const Transform& 
                          {"file", p.string_or("filename", "")},
                          {"mapping", "equal_area"},
                          {"filter", "point"}};
-            if (!to_world.is_identity()) light["transform"] = transform_json(to_world);
+            if (!directions.is_identity()) light["transform"] = transform_json(directions);
             // pbrt-v4 integrates a map's illuminance with a texel solid angle of 2 pi / (w h)
             // instead of 4 pi / (w h), so its maps deliver twice the illuminance asked for.
             illuminance_factor = 2;

@@ -309,6 +309,15 @@ std::string translate_material(const std::string& wanted_name, const std::string
         m = Json{{"type", "dielectric"}, {"ior", ior(p, "eta", 1.5, ctx)}};
         Json r = roughness(p, "", ctx);
         if (r != Json(0.0)) m["roughness"] = r;
+    } else if (type == "diffusetransmission") {
+        // pbrt-v4's DiffuseTransmissionMaterial: R and T (0.25 each by default) times `scale`.
+        Json r = p.colour("reflectance", colours), t = p.colour("transmittance", colours);
+        m = Json{{"type", "diffuse_transmission"},
+                 {"reflectance", r.is_null() ? Json(0.25) : r},
+                 {"transmittance", t.is_null() ? Json(0.25) : t}};
+        const double scale = p.float_or("scale", 1.0);
+        if (!(scale >= 0)) p.fail(p.find("scale"), "diffusetransmission: scale must be >= 0");
+        if (scale != 1) m["scale"] = scale;
     } else if (type == "thindielectric") {
         m = Json{{"type", "thin_dielectric"}, {"ior", ior(p, "eta", 1.5, ctx)}};
     } else if (type == "mix") {
@@ -331,9 +340,8 @@ std::string translate_material(const std::string& wanted_name, const std::string
         // cross unchanged (and no surface to carry an area light).
         m = Json{{"type", "interface"}};
     } else {
-        // measured, subsurface, diffusetransmission: a diffuse stand-in of their colour.
+        // measured, subsurface: a diffuse stand-in of their colour.
         Json r = p.colour("reflectance", colours);
-        if (r.is_null() && type == "diffusetransmission") r = Json(0.25);
         ctx.warn(p.location(), fmt::format("Material \"{}\" is not supported; a diffuse material of {} stands in", type,
                                            r.is_null() ? "reflectance 0.5" : "its reflectance"));
         m = Json{{"type", "diffuse"}, {"albedo", r.is_null() ? Json(0.5) : r}};

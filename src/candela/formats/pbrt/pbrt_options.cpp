@@ -24,8 +24,18 @@ std::string directive_type(const Params& p) {
 // camera puts cross(forward, up) on the right. Where the two agree (the camera transform mirrors
 // space, as most exporters' do) the camera is written as position / look_at / up, which people
 // can read; otherwise as its matrix (`transform`), which keeps pbrt's orientation.
+// A projective camera transform (pbrt-v4 takes any matrix) becomes the affine one that makes the
+// same rays: the origin where it takes the camera's (divided by w), the directions by the upper
+// 3x3 of its render-space transform (pbrt_directions), as pbrt-v4's pinhole camera makes them.
 void write_camera_frame(const Transform& camera_from_world, Json& camera) {
-    const Transform world_from_camera = camera_from_world.inverse();
+    Transform world_from_camera = camera_from_world.inverse();
+    if (!world_from_camera.is_affine()) {
+        const Vec3d origin = world_from_camera.apply_point(Vec3d(0, 0, 0));
+        Transform::Matrix m = pbrt_directions(world_from_camera, origin).matrix();
+        for (int i = 0; i < 3; ++i) m[size_t(i)][3] = origin[i];
+        m[3] = {0, 0, 0, 1};
+        world_from_camera = Transform(m);
+    }
     const Vec3d position = world_from_camera.apply_point(Vec3d(0, 0, 0));
     const Vec3d forward = normalize(world_from_camera.apply_vector(Vec3d(0, 0, 1)));
     const Vec3d up = normalize(world_from_camera.apply_vector(Vec3d(0, 1, 0)));
@@ -129,8 +139,11 @@ void translate_film(const RenderOptions& o, int& width, int& height, Json& film,
     if (auto sensor = p.get_string("sensor"); sensor && *sensor != "cie1931")
         ctx.warn(p.find("sensor")->location,
                  fmt::format("sensor \"{}\" is not supported; the CIE 1931 observer is used", *sensor));
-    if (auto m = p.get_float("maxcomponentvalue"); m && std::isfinite(*m))
-        ctx.warn(p.find("maxcomponentvalue")->location, "maxcomponentvalue (clamping samples) is not supported");
+    // pbrt-v4's RGBFilm clamps each sample's sensor values to maxcomponentvalue (infinity: none).
+    if (auto m = p.get_float("maxcomponentvalue")) {
+        if (!(*m > 0)) p.fail(p.find("maxcomponentvalue"), "maxcomponentvalue must be > 0");
+        if (std::isfinite(*m)) film["max_component_value"] = *m;
+    }
     p.bool_or("savefp16", true);  // a matter of the output file only
     p.float_or("diagonal", 35.0);  // only the realistic camera reads it
 }

@@ -210,7 +210,17 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
     }
     Json shape = Json::object();
     std::function<double()> area;
-    const Transform& ctm = state.ctm;
+    // A mesh takes a projective transform vertex by vertex, as pbrt-v4's triangles do; pbrt-v4's
+    // quadrics intersect rays taken into their object space by it, which candela's cannot.
+    Transform affine_ctm = state.ctm;
+    if (!state.ctm.is_affine() && (type == "sphere" || type == "disk")) {
+        ctx.warn(p.location(), type + ": a projective transform (a last row other than 0 0 0 1) is not supported; "
+                                      "its last row is taken as 0 0 0 1");
+        Transform::Matrix m = state.ctm.matrix();
+        m[3] = {0, 0, 0, 1};
+        affine_ctm = Transform(m);
+    }
+    const Transform& ctm = affine_ctm;
     if (type == "trianglemesh" || type == "plymesh" || type == "loopsubdiv" || type == "bilinearmesh") {
         std::string file;
         if (type != "plymesh") {

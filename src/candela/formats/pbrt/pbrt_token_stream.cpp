@@ -17,7 +17,41 @@ fs::path identity_of(const fs::path& path) {
     return canonical;
 }
 
+// Reads what is left of `stream` (a whole compressed file, which is far smaller than its text).
+std::string read_rest(std::FILE* stream, const Location& origin) {
+    std::string bytes;
+    char chunk[1 << 16];
+    size_t got = 0;
+    while ((got = std::fread(chunk, 1, sizeof chunk, stream)) > 0) bytes.append(chunk, got);
+    if (std::ferror(stream)) {
+        const int error = errno;
+        std::fclose(stream);
+        fail(origin, std::string("cannot read the file: ") + std::strerror(error));
+    }
+    std::fclose(stream);
+    return bytes;
+}
+
 }  // namespace
+
+std::unique_ptr<Tokenizer> TokenStream::tokenizer(std::FILE* stream, const Location* origin) const {
+    unsigned char magic[2] = {0, 0};
+    const size_t got = std::fread(magic, 1, sizeof magic, stream);
+    const bool gzip = got == 2 && magic[0] == 0x1f && magic[1] == 0x8b;
+    if (!gzip) {
+        // Back to the start; a stream that cannot seek was read to no more than its two bytes.
+        if (std::fseek(stream, 0, SEEK_SET) != 0) {
+            const int error = errno;
+            std::fclose(stream);
+            fail(*origin, std::string("cannot read the file: ") + std::strerror(error));
+        }
+        return std::make_unique<Tokenizer>(stream, origin, options_.chunk_size, options_.max_token_bytes);
+    }
+    std::string compressed(reinterpret_cast<const char*>(magic), 2);
+    compressed += read_rest(stream, *origin);
+    return std::make_unique<Tokenizer>(Tokenizer::Gzip{std::move(compressed)}, origin, options_.chunk_size,
+                                       options_.max_token_bytes);
+}
 
 const Location* TokenStream::add_origin(std::string display_name, std::shared_ptr<const IncludeSite> from) {
     auto origin = std::make_unique<Location>();
@@ -36,8 +70,7 @@ void TokenStream::open_main_file(const fs::path& name) {
         const int error = errno;
         fail(*origin, std::string("cannot open the scene: ") + std::strerror(error));
     }
-    files_.push_back({std::make_unique<Tokenizer>(stream, origin, options_.chunk_size, options_.max_token_bytes),
-                      origin, identity_of(name)});
+    files_.push_back({tokenizer(stream, origin), origin, identity_of(name)});
 }
 
 void TokenStream::open_main_text(std::string_view text, const fs::path& name) {
@@ -80,8 +113,7 @@ void TokenStream::include(const std::string& name, const Token& directive) {
         fail(at, "cannot open \"" + display_name + "\": " + std::strerror(error));
     }
     const Location* origin = add_origin(display_name, std::make_shared<const IncludeSite>(IncludeSite{at}));
-    files_.push_back(
-        {std::make_unique<Tokenizer>(stream, origin, options_.chunk_size, options_.max_token_bytes), origin, identity});
+    files_.push_back({tokenizer(stream, origin), origin, identity});
 }
 
 bool TokenStream::read(Token& out) {

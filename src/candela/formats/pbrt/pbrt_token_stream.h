@@ -3,7 +3,8 @@
 // push a file (its path relative to the including file's folder), and the end of an included
 // file continues the file that included it, as in pbrt-v4. Holds one token of lookahead, the
 // open files (each a bounded chunk buffer), and the names of every file opened, which tokens
-// point to.
+// point to. A file whose first bytes are gzip's magic number is read inflated, whatever its name
+// (pbrt-v4 inflates files named .gz).
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -38,6 +39,8 @@ class TokenStream {
         std::filesystem::path identity;  // the canonical path, to find cycles
     };
     const Location* add_origin(std::string display_name, std::shared_ptr<const IncludeSite> from);
+    // The tokenizer of the open file `stream` (it takes it), inflating it if it is gzip data.
+    std::unique_ptr<Tokenizer> tokenizer(std::FILE* stream, const Location* origin) const;
     bool read(Token& out);
 
     ParseOptions options_;

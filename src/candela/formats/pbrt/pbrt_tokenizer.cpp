@@ -5,6 +5,9 @@
 #include <cerrno>
 #include <cstring>
 #include <limits>
+#include <utility>
+
+#include "candela/formats/mesh/gzip_stream.h"
 
 namespace candela::pbrt {
 
@@ -39,25 +42,56 @@ Tokenizer::Tokenizer(std::string_view text, const Location* file, size_t chunk_s
       max_token_bytes_(max_token_bytes),
       buffer_(std::clamp<size_t>(text.size(), 1, std::max<size_t>(chunk_size, 1))) {}
 
+Tokenizer::Tokenizer(Gzip compressed, const Location* file, size_t chunk_size, size_t max_token_bytes)
+    : compressed_(std::move(compressed.compressed)),
+      file_(file),
+      max_token_bytes_(max_token_bytes),
+      buffer_(std::max<size_t>(chunk_size, 1)) {
+    try {
+        gzip_ = std::make_unique<GzipStream>(compressed_, file->file);
+    } catch (const SceneError& e) {
+        fail(*file_, e.message());
+    }
+}
+
 Tokenizer::~Tokenizer() {
     if (stream_) std::fclose(stream_);
 }
 
 bool Tokenizer::refill() {
     offset_ += end_;
-    pos_ = end_ = 0;
+    pos_ = 0;
+    end_ = read_chunk();
+    // Every source fills the whole buffer but at its end.
+    if (!checked_text_) check_text(end_ < buffer_.size());
+    return end_ > 0;
+}
+
+size_t Tokenizer::read_chunk() {
     if (stream_) {
-        end_ = std::fread(buffer_.data(), 1, buffer_.size(), stream_);
-        if (end_ == 0 && std::ferror(stream_)) {
+        const size_t got = std::fread(buffer_.data(), 1, buffer_.size(), stream_);
+        if (got == 0 && std::ferror(stream_)) {
             const int error = errno;
             fail_at(line_, column_at_pos(), std::string("cannot read the file: ") + std::strerror(error));
         }
-    } else {
-        end_ = std::min(text_.size(), buffer_.size());
-        std::copy_n(text_.data(), end_, buffer_.data());
-        text_.remove_prefix(end_);
+        return got;
     }
-    return end_ > 0;
+    if (gzip_) {
+        // The inflater's errors (corrupt or truncated data) name the compressed byte offset: they
+        // are located at the file, with its include chain.
+        inflated_.clear();
+        try {
+            gzip_->inflate_some(inflated_, buffer_.size());
+        } catch (const SceneError& e) {
+            fail(*file_, e.message());
+        }
+        std::copy(inflated_.begin(), inflated_.end(), buffer_.begin());
+        return inflated_.size();
+    }
+    const size_t got = std::min(text_.size(), buffer_.size());
+    std::copy_n(text_.data(), got, buffer_.data());
+    text_.remove_prefix(got);
+    return got;
 }
 
 void Tokenizer::fail_at(int line, int column, const std::string& message) const {
@@ -165,7 +199,47 @@ size_t first_ill_formed_utf8(const std::string& s) {
     return std::string::npos;
 }
 
+// Bytes of text files: white space and everything from ' ' up, but no other control byte.
+constexpr bool is_text_byte(unsigned char c) { return c >= 0x20 || (c >= '\t' && c <= '\r'); }
+
+// Why the first bytes of a file, `head`, are not text, or "" when they are: a control byte (a
+// NUL above all), or ill-formed UTF-8 outside a comment (pbrt-v4 reads no encoding but UTF-8,
+// yet a comment in Latin-1 troubles neither it nor us). `complete` says `head` is the whole file;
+// otherwise a character cut at its end is no fault.
+std::string not_text(const std::string& head, bool complete) {
+    bool in_comment = false;
+    for (size_t i = 0; i < head.size();) {
+        const auto c = static_cast<unsigned char>(head[i]);
+        if (!is_text_byte(c)) return "a control byte 0x" + hex_byte(head[i]) + " at byte " + std::to_string(i + 1);
+        if (c == '#') in_comment = true;
+        if (c == '\n') in_comment = false;
+        if (c < 0x80 || in_comment) {
+            ++i;
+            continue;
+        }
+        // One character: its lead byte says how long it is (at most 4 bytes).
+        const size_t length = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : 2;
+        const std::string character = head.substr(i, length);
+        const bool cut = i + length > head.size() && !complete;
+        if (!cut && first_ill_formed_utf8(character) != std::string::npos)
+            return "ill-formed UTF-8 (0x" + hex_byte(head[i]) + " at byte " + std::to_string(i + 1) + ")";
+        i += length;
+    }
+    return "";
+}
+
 }  // namespace
+
+void Tokenizer::check_text(bool at_end) {
+    // The first KiB decides; it arrives in one chunk but for the tiny chunks of tests.
+    constexpr size_t kHeadBytes = 1024;
+    head_.append(buffer_.data(), std::min(end_, kHeadBytes - head_.size()));
+    if (head_.size() < kHeadBytes && !at_end) return;
+    checked_text_ = true;
+    const std::string why = not_text(head_, at_end);
+    if (!why.empty()) fail(*file_, "is a binary file, not pbrt-v4 scene text (" + why + ")");
+    head_ = std::string();
+}
 
 void Tokenizer::read_string(Token& out) {
     for (;;) {

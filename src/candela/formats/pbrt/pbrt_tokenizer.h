@@ -3,7 +3,10 @@
 // (escapes \b \f \n \r \t \\ \' \"; a line break or the end of the file inside one is an error),
 // '[' and ']', and bare words (directives, numbers, true/false), separated by white space; '#'
 // starts a comment that runs to the end of the line. The file is read in fixed-size chunks, so
-// memory stays bounded however large the file; a token may straddle two chunks.
+// memory stays bounded however large the file; a token may straddle two chunks. gzip-compressed
+// text is inflated chunk by chunk as it is read. A file whose first bytes are not text (a NUL or
+// another control byte, or ill-formed UTF-8 outside a comment) is an error at the file: a binary
+// file is never read as words.
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
@@ -14,6 +17,10 @@
 #include <vector>
 
 #include "candela/formats/pbrt/pbrt_location.h"
+
+namespace candela {
+class GzipStream;
+}
 
 namespace candela::pbrt {
 
@@ -35,6 +42,11 @@ class Tokenizer {
     Tokenizer(std::FILE* stream, const Location* file, size_t chunk_size, size_t max_token_bytes);
     // Reads text held in memory, in the same chunks (so tests can make tokens straddle them).
     Tokenizer(std::string_view text, const Location* file, size_t chunk_size, size_t max_token_bytes);
+    // Reads the text that gzip data `compressed` (a whole .gz file) inflates to.
+    struct Gzip {
+        std::string compressed;
+    };
+    Tokenizer(Gzip compressed, const Location* file, size_t chunk_size, size_t max_token_bytes);
     ~Tokenizer();
     Tokenizer(const Tokenizer&) = delete;
     Tokenizer& operator=(const Tokenizer&) = delete;
@@ -44,6 +56,9 @@ class Tokenizer {
 
   private:
     bool refill();  // discards the buffer, reads the next chunk; false at the end of the input
+    size_t read_chunk();
+    // Looks at the first bytes as they arrive (`head_`): an error unless they are text.
+    void check_text(bool at_end);
     // The byte at the read position, refilling as needed; -1 at the end of the input.
     int peek() { return pos_ < end_ || refill() ? static_cast<unsigned char>(buffer_[pos_]) : -1; }
     void skip_comment();
@@ -59,6 +74,11 @@ class Tokenizer {
 
     std::FILE* stream_ = nullptr;
     std::string_view text_;  // the rest of the in-memory text
+    std::string compressed_;  // gzip input: the compressed file, and its inflater
+    std::unique_ptr<GzipStream> gzip_;
+    std::string inflated_;     // a chunk from the inflater
+    std::string head_;         // the first bytes, until check_text has seen enough
+    bool checked_text_ = false;
     const Location* file_;
     size_t max_token_bytes_;
     std::vector<char> buffer_;
