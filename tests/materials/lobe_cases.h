@@ -11,7 +11,7 @@
 namespace candela::test {
 
 // A new lobe type must be added to kLobeCases (and thereby to every test that runs over them).
-static_assert(std::variant_size_v<BsdfLobe> == 10, "add the new lobe to kLobeCases");
+static_assert(std::variant_size_v<BsdfLobe> == 11, "add the new lobe to kLobeCases");
 
 // Lobes whose eval() and pdf() are stochastic estimates (materials/layered.h): sample() agrees
 // with them in expectation only, which layered_stat_test.cpp checks; the generic tests check of
