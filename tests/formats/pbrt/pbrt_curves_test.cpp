@@ -13,24 +13,16 @@
 #include "candela/formats/pbrt/pbrt_importer.h"
 #include "candela/formats/pbrt/pbrt_scene_loader.h"
 #include "candela/formats/scene_file.h"
+#include "formats/pbrt/pbrt_import_text.h"
 #include "candela/render/renderer.h"
 #include "support/test_files.h"
 
 namespace candela::pbrt {
 namespace {
 
-const std::filesystem::path kFile = std::filesystem::path(CANDELA_TEST_DATA_DIR) / "pbrt" / "inline.pbrt";
-
-ImportedScene import(const std::string& text) { return import_pbrt_string(text, kFile); }
-
-std::string error_of(const std::string& text) {
-    try {
-        import(text);
-    } catch (const SceneError& e) {
-        return e.formatted();
-    }
-    return "no error";
-}
+const std::filesystem::path& kFile = test::kInlineFile;
+using test::import;
+std::string error_of(const std::string& text) { return test::import_error(text); }
 
 constexpr const char* kLight = "LightSource \"infinite\" \"rgb L\" [1 1 1]\n";
 constexpr const char* kHair = R"(Material "diffuse"
@@ -106,7 +98,7 @@ Shape "curve" "point3 P" [0 0 0 1 1 0 2 1 0 3 0 0]
 }
 
 TEST(PbrtCurves, ConvertWritesCurvesFilesThatLoadToTheSameCurves) {
-    const auto dir = test::fresh_dir("pbrt_curves_convert");
+    const auto dir = candela::test::fresh_dir("pbrt_curves_convert");
     {
         std::ofstream f(dir / "hair.pbrt");
         f << "WorldBegin\n" << kLight << kHair;

@@ -10,24 +10,16 @@
 #include "candela/core/error.h"
 #include "candela/formats/pbrt/pbrt_importer.h"
 #include "candela/formats/pbrt/pbrt_scene_loader.h"
+#include "formats/pbrt/pbrt_import_text.h"
 
 namespace candela::pbrt {
 namespace {
 
 using Json = nlohmann::ordered_json;
 
-const std::filesystem::path kFile = std::filesystem::path(CANDELA_TEST_DATA_DIR) / "pbrt" / "inline.pbrt";
-
-ImportedScene import(const std::string& text) { return import_pbrt_string(text, kFile); }
-
-std::string error_of(const std::string& text) {
-    try {
-        import(text);
-    } catch (const SceneError& e) {
-        return e.formatted();
-    }
-    return "no error";
-}
+const std::filesystem::path& kFile = test::kInlineFile;
+using test::import;
+std::string error_of(const std::string& text) { return test::import_error(text); }
 
 bool has_warning(const ImportedScene& s, const std::string& part) {
     for (const std::string& w : s.warnings)
