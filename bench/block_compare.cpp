@@ -79,6 +79,11 @@ bool within_bounds(const BlockComparison& c, double max_mean_bias, double max_p9
     return c.p95 <= max_p95;
 }
 
+std::string describe(const BlockComparison& c) {
+    return fmt::format("mean ratio {} {} {}, block p50 {}, p95 {}, max {}", c.mean_ratio[0], c.mean_ratio[1],
+                       c.mean_ratio[2], c.p50, c.p95, c.max);
+}
+
 Image block_means(const Image& image, int block) {
     if (block < 1 || block > image.width || block > image.height)
         throw std::runtime_error("block_means: the block is larger than the image");

@@ -10,6 +10,7 @@
 // Blocks are whole: where a side is not a multiple of the block size, the last partial row or
 // column of pixels is left out of the block statistics (the means use every pixel).
 #include <array>
+#include <string>
 #include <vector>
 
 #include "candela/image/image.h"
@@ -40,5 +41,8 @@ Image block_means(const Image& image, int block);
 
 // Whether every channel's |mean_ratio - 1| is at most max_mean_bias and p95 at most max_p95.
 bool within_bounds(const BlockComparison& c, double max_mean_bias, double max_p95);
+
+// "mean ratio R G B, block p50 P, p95 P, max M": the numbers the reference tests print.
+std::string describe(const BlockComparison& c);
 
 }  // namespace candela::bench

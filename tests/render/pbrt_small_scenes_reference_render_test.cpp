@@ -74,11 +74,8 @@ TEST_P(AgainstPbrtV4SmallScenes, IsWithinPbrtsOwnNoise) {
         bench::compare_blocks(bench::block_means(image, kBlock), bench::block_means(ref, kBlock), 1);
     EXPECT_EQ(c.blocks_total, (ref.width / kBlock) * (ref.height / kBlock));
     // The numbers, passing or not (README.md's table has pbrt-v4's own).
-    std::cout << p.name << ": mean ratio " << c.mean_ratio[0] << " " << c.mean_ratio[1] << " " << c.mean_ratio[2]
-              << ", block p50 " << c.p50 << ", p95 " << c.p95 << ", max " << c.max << "\n";
-    EXPECT_TRUE(bench::within_bounds(c, p.max_mean_bias, p.max_p95))
-        << p.name << ": mean ratio " << c.mean_ratio[0] << " " << c.mean_ratio[1] << " " << c.mean_ratio[2]
-        << ", block p50 " << c.p50 << ", p95 " << c.p95 << ", max " << c.max;
+    std::cout << p.name << ": " << bench::describe(c) << "\n";
+    EXPECT_TRUE(bench::within_bounds(c, p.max_mean_bias, p.max_p95)) << p.name << ": " << bench::describe(c);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, AgainstPbrtV4SmallScenes, testing::ValuesIn(kScenes),
