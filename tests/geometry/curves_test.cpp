@@ -191,5 +191,21 @@ TEST(CurveHits, AnInstancedCurveHitsAsTheSameCurvePlacedInTheWorld) {
     EXPECT_FALSE(accel.intersect(down_at(1.0f, 0.45f)));
 }
 
+// Embree's curves ignore hits nearer the ray's origin than twice their radius (its
+// self-intersection avoidance); the accelerator moves every ray's origin back in a scene with
+// curves, so that a hair right beside the origin still blocks it, as in pbrt-v4.
+TEST(CurveHits, ACurveRightBesideTheOriginIsHit) {
+    const OneCurve c(straight_curve(CurveType::kCylinder, 0.02f));  // radius 0.01
+    for (float d : {0.5f, 0.02f, 0.011f}) {
+        auto hit = c.accel->intersect(Ray{Vec3f(0.3f, 0, d), Vec3f(0, 0, -1), 0.0f, 100.0f});
+        ASSERT_TRUE(hit) << d;
+        EXPECT_NEAR(hit->t, d, 1e-5f);
+        EXPECT_TRUE(c.accel->occluded(Ray{Vec3f(0.3f, 0, d), normalize(Vec3f(0.2f, 0, -1)), 0.0f, 100.0f})) << d;
+        // A ray that stops short of it is not blocked, nor one that starts past it.
+        EXPECT_FALSE(c.accel->occluded(Ray{Vec3f(0.3f, 0, d), Vec3f(0, 0, -1), 0.0f, 0.5f * d})) << d;
+        EXPECT_FALSE(c.accel->intersect(Ray{Vec3f(0.3f, 0, -d), Vec3f(0, 0, -1), 0.0f, 100.0f})) << d;
+    }
+}
+
 }  // namespace
 }  // namespace candela

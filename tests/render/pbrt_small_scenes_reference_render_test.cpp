@@ -36,6 +36,7 @@ struct SmallScene {
 constexpr SmallScene kScenes[] = {
     {"fog-spot-glass", 0.02, 0.28}, {"grid-temperature", 0.02, 0.18}, {"rgbgrid-sphere", 0.02, 0.12},
     {"cloud-box", 0.01, 0.05},      {"vdb-smoke", 0.01, 0.04},     {"curves-diffuse", 0.01, 0.02, "pbrt-curves"},
+    {"curves-hair", 0.01, 0.065, "pbrt-curves"},
 };
 
 // gtest prints the scene's name, not its bytes.

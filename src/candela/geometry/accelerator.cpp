@@ -255,6 +255,21 @@ void ribbon_filter(const RTCFilterFunctionNArguments* args) {
     }
 }
 
+// Moves the ray's origin back by `distance` along its direction and its range forward by as much
+// (Impl::curve_clearance); returns the amount, in units of the ray's parameter, to take off the
+// t of its hit.
+float move_origin_back(RTCRay& r, float distance) {
+    const float len = std::sqrt(r.dir_x * r.dir_x + r.dir_y * r.dir_y + r.dir_z * r.dir_z);
+    if (!(len > 0.0f)) return 0.0f;
+    const float s = distance / len;
+    r.org_x -= r.dir_x * s;
+    r.org_y -= r.dir_y * s;
+    r.org_z -= r.dir_z * s;
+    r.tnear += s;
+    r.tfar += s;  // stays infinite
+    return s;
+}
+
 RTCRay to_embree(const Ray& ray) {
     RTCRay r;
     r.org_x = ray.o.x;
@@ -295,6 +310,12 @@ struct Accelerator::Impl {
     // from `geometries`, whose entries stay 48 bytes (an index the hot path computes with a shift).
     std::vector<bool> in_object;
     uint32_t shape_count = 0;  // the first instance's top-level id, and the instances' entry
+    // Embree's curve intersectors ignore hits nearer the ray's origin than twice the curve's
+    // radius (its self-intersection avoidance, EMBREE_CURVE_SELF_INTERSECTION_AVOIDANCE_FACTOR 2
+    // in Debian's build): light would leak through a neighbouring hair. In a scene with curves,
+    // every ray therefore starts this far behind its origin, its range moved by as much, so that
+    // each curve hit is at least that far from where Embree thinks the ray starts. 0: no curves.
+    float curve_clearance = 0.0f;
     std::span<const ObjectShapes> objects;
     std::span<const Instance> instances;
     // The cut-out shapes' filter data, in a vector reserved before any is attached: Embree keeps
@@ -585,10 +606,20 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
                 m.geometries[id].user = &disks[index];
                 m.geometries[id].kind = Impl::Geometry::Kind::kDisk;
                 break;
-            case ShapeKind::kCurves:
+            case ShapeKind::kCurves: {
                 m.geometries[id].user = &curves[index];
                 m.geometries[id].kind = Impl::Geometry::Kind::kCurves;
+                // Instances may scale the curves up: by at most the largest instance scale.
+                float r = 0.0f;
+                for (const CurvePoint& c : curves[index].points) r = std::max(r, c.r);
+                float scale = 1.0f;
+                if (m.in_object[id])
+                    for (const Instance& instance : instancing.instances)
+                        for (int i = 0; i < 3; ++i)
+                            for (int j = 0; j < 3; ++j) scale = std::max(scale, std::abs(instance.to_world.m[i][j]) * 1.7321f);
+                m.curve_clearance = std::max(m.curve_clearance, 2.02f * r * scale);
                 break;
+            }
         }
     }
     m.device = rtcNewDevice(nullptr);
@@ -640,7 +671,11 @@ std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
     rh.ray = to_embree(ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    float back = 0.0f;
+    if (impl_->curve_clearance > 0.0f) [[unlikely]]
+        back = move_origin_back(rh.ray, impl_->curve_clearance);
     rtcIntersect1(impl_->scene, &context, &rh);
+    rh.ray.tfar -= back;
     if (RayObserver* o = g_ray_observer.load(std::memory_order_relaxed)) [[unlikely]]
         o->observe(ray, false, rh.hit.geomID != RTC_INVALID_GEOMETRY_ID);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return result;
@@ -713,6 +748,8 @@ bool Accelerator::occluded(const Ray& ray) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay r = to_embree(ray);
+    if (impl_->curve_clearance > 0.0f) [[unlikely]]
+        move_origin_back(r, impl_->curve_clearance);
     rtcOccluded1(impl_->scene, &context, &r);
     if (RayObserver* o = g_ray_observer.load(std::memory_order_relaxed)) [[unlikely]]
         o->observe(ray, true, r.tfar == -kInfinity);
