@@ -258,7 +258,8 @@ void ribbon_filter(const RTCFilterFunctionNArguments* args) {
 // Moves the ray's origin back by `distance` along its direction and its range forward by as much
 // (Impl::curve_clearance); returns the amount, in units of the ray's parameter, to take off the
 // t of its hit.
-float move_origin_back(RTCRay& r, float distance) {
+// Out of line: scenes without curves pay one predictable branch per ray.
+[[gnu::noinline]] float move_origin_back(RTCRay& r, float distance) {
     const float len = std::sqrt(r.dir_x * r.dir_x + r.dir_y * r.dir_y + r.dir_z * r.dir_z);
     if (!(len > 0.0f)) return 0.0f;
     const float s = distance / len;
@@ -671,11 +672,13 @@ std::optional<SurfaceHit> Accelerator::intersect(const Ray& ray) const {
     rh.ray = to_embree(ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    const bool moved = impl_->curve_clearance > 0.0f;
     float back = 0.0f;
-    if (impl_->curve_clearance > 0.0f) [[unlikely]]
+    if (moved) [[unlikely]]
         back = move_origin_back(rh.ray, impl_->curve_clearance);
     rtcIntersect1(impl_->scene, &context, &rh);
-    rh.ray.tfar -= back;
+    if (moved) [[unlikely]]
+        rh.ray.tfar -= back;
     if (RayObserver* o = g_ray_observer.load(std::memory_order_relaxed)) [[unlikely]]
         o->observe(ray, false, rh.hit.geomID != RTC_INVALID_GEOMETRY_ID);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return result;
