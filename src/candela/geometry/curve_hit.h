@@ -37,12 +37,7 @@ inline Vec3f rotate_perpendicular(const Vec3f& v, const Vec3f& axis, float angle
 
 // A ribbon's normal at u: its segment's end normals slerped (pbrt-v4's), unit.
 inline Vec3f ribbon_normal(const CurveSet& c, uint32_t segment, float u) {
-    const Vec3f n0 = c.normals[c.segments[segment]], n1 = c.normals[c.segments[segment] + 3];
-    const float angle = std::acos(std::clamp(dot(n0, n1), -1.0f, 1.0f));
-    const Vec3f n = angle < 1e-4f ? n0 * (1 - u) + n1 * u
-                                  : n0 * (std::sin((1 - u) * angle) / std::sin(angle)) +
-                                        n1 * (std::sin(u * angle) / std::sin(angle));
-    return normalize(n);
+    return slerp_unit(c.normals[c.segments[segment]], c.normals[c.segments[segment] + 3], u);
 }
 
 // The fraction of its width a ribbon shows to a ray along unit `d` at u: pbrt-v4 intersects a

@@ -31,17 +31,14 @@ Cubic bspline_segment(std::span<const Vec3f> c, int degree) {
 
 bool finite(const Vec3f& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// The unit vector a fraction t of the way from unit a to unit b along the great circle (slerp),
-// as pbrt-v4 interpolates a ribbon's end normals.
-Vec3f slerp(const Vec3f& a, const Vec3f& b, float t) {
-    const float cos_angle = std::clamp(dot(a, b), -1.0f, 1.0f);
-    const float angle = std::acos(cos_angle);
+}  // namespace
+
+Vec3f slerp_unit(const Vec3f& a, const Vec3f& b, float t) {
+    const float angle = std::acos(std::clamp(dot(a, b), -1.0f, 1.0f));
     if (angle < 1e-4f) return normalize(a * (1 - t) + b * t);
     const float s = std::sin(angle);
     return normalize(a * (std::sin((1 - t) * angle) / s) + b * (std::sin(t * angle) / s));
 }
-
-}  // namespace
 
 size_t curve_segment_count(size_t points, CurveBasis basis, int degree) {
     if (degree != 2 && degree != 3) return 0;
@@ -50,8 +47,8 @@ size_t curve_segment_count(size_t points, CurveBasis basis, int degree) {
     return points >= d + 1 ? points - d : 0;
 }
 
-std::string add_curve(CurveSet& set, std::span<const Vec3f> cp, CurveBasis basis, int degree, float width0,
-                      float width1, std::span<const Vec3f> end_normals) {
+std::string curve_error(std::span<const Vec3f> cp, CurveBasis basis, int degree, float width0, float width1,
+                        bool ribbon, std::span<const Vec3f> end_normals) {
     if (degree != 2 && degree != 3) return fmt::format("degree {} is not 2 or 3", degree);
     const size_t n = curve_segment_count(cp.size(), basis, degree);
     if (n == 0) {
@@ -67,13 +64,22 @@ std::string add_curve(CurveSet& set, std::span<const Vec3f> cp, CurveBasis basis
     if (!(width0 >= 0 && width1 >= 0 && std::isfinite(width0) && std::isfinite(width1)) || (width0 == 0 && width1 == 0))
         return fmt::format("the width must be finite and >= 0, and not 0 at both ends (width0 {}, width1 {})", width0,
                            width1);
-    if (set.type == CurveType::kRibbon) {
+    if (ribbon) {
         if (end_normals.size() != n + 1)
             return fmt::format("a ribbon of {} segments needs {} normals, one at each segment's end; {} given", n,
                                n + 1, end_normals.size());
         for (const Vec3f& v : end_normals)
             if (!finite(v) || !(length(v) > 0)) return "a ribbon's normals must be finite and nonzero";
     }
+    return "";
+}
+
+std::string add_curve(CurveSet& set, std::span<const Vec3f> cp, CurveBasis basis, int degree, float width0,
+                      float width1, std::span<const Vec3f> end_normals) {
+    const bool ribbon = set.type == CurveType::kRibbon;
+    if (std::string error = curve_error(cp, basis, degree, width0, width1, ribbon, end_normals); !error.empty())
+        return error;
+    const size_t n = curve_segment_count(cp.size(), basis, degree);
     const auto radius = [&](float t) { return 0.5f * (width0 + (width1 - width0) * t); };
     for (size_t s = 0; s < n; ++s) {
         Cubic c;
@@ -89,9 +95,9 @@ std::string add_curve(CurveSet& set, std::span<const Vec3f> cp, CurveBasis basis
             // Radii at u = k/3 of the segment: pbrt's width runs linearly over the segments.
             const float t = (float(s) + float(k) / 3.0f) / float(n);
             set.points.push_back({c[size_t(k)], radius(t)});
-            if (set.type == CurveType::kRibbon) {
+            if (ribbon) {
                 const Vec3f a = normalize(end_normals[s]), b = normalize(end_normals[s + 1]);
-                set.normals.push_back(slerp(a, b, float(k) / 3.0f));
+                set.normals.push_back(slerp_unit(a, b, float(k) / 3.0f));
             }
         }
         // A Bezier chain shares its segments' end points by definition, and a B-spline's Bezier

@@ -57,6 +57,15 @@ struct CurveSet {
 std::string add_curve(CurveSet& set, std::span<const Vec3f> control_points, CurveBasis basis, int degree,
                       float width0, float width1, std::span<const Vec3f> end_normals = {});
 
+// What is wrong with such a curve ("" when nothing): add_curve's checks, without adding it, for
+// the pbrt importer, which locates the error at the directive. `ribbon`: it needs the normals.
+std::string curve_error(std::span<const Vec3f> control_points, CurveBasis basis, int degree, float width0,
+                        float width1, bool ribbon, std::span<const Vec3f> end_normals = {});
+
+// The unit vector a fraction t of the way from unit a to unit b along the great circle (slerp),
+// as pbrt-v4 interpolates a ribbon's end normals.
+Vec3f slerp_unit(const Vec3f& a, const Vec3f& b, float t);
+
 // The number of segments `points` control points make in `basis` and `degree`; 0 when the count
 // does not fit (Bezier: degree + 1 + n degree points; B-spline: at least degree + 1).
 size_t curve_segment_count(size_t points, CurveBasis basis, int degree);

@@ -41,14 +41,10 @@ void translate_curve(const Params& p, const GraphicsState& state, Json& shapes, 
     }
     p.int_or("splitdepth", 3);  // pbrt-v4's own subdivision; Embree refines curves itself
     // The same checks the JSON loader makes, located here at the directive.
-    {
-        CurveSet check;
-        check.type = type == "ribbon" ? CurveType::kRibbon : CurveType::kFlat;
-        const std::string error =
-            add_curve(check, points, basis == "bezier" ? CurveBasis::kBezier : CurveBasis::kBSpline, int(degree),
-                      float(width0), float(width1), normals);
-        if (!error.empty()) p.fail(P, "curve: " + error);
-    }
+    if (const std::string error = curve_error(points, basis == "bezier" ? CurveBasis::kBezier : CurveBasis::kBSpline,
+                                              int(degree), float(width0), float(width1), type == "ribbon", normals);
+        !error.empty())
+        p.fail(P, "curve: " + error);
     if (state.area_light)
         ctx.warn(p.location(), "curve: an area light on curves is not supported (pbrt-v4 cannot sample curves "
                                "either); the curves do not emit");
