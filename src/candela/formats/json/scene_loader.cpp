@@ -16,6 +16,7 @@
 #include "candela/camera/camera_frame.h"
 #include "candela/scene/enum_names.h"
 #include "candela/formats/json/json_cursor.h"
+#include "candela/scene/media_warning.h"
 #include "candela/scene/memory_budget.h"
 #include "candela/formats/json/scene_sections.h"
 
@@ -345,9 +346,8 @@ void warn_if_media_ignored(Scene& scene) {
     if (!places_media(scene)) return;
     scene.warnings.push_back(
         SceneError(SourceLocation{scene.file.string(), 0, 0, ""},
-                   fmt::format("the scene has participating media but the {} integrator ignores them (it renders "
-                               "them as vacuum); use \"volpath\"",
-                               integrator_type_name(t)))
+                   fmt::format("{}{} integrator ignores them (it renders them as vacuum); use \"volpath\"",
+                               kMediaIgnoredWarning, integrator_type_name(t)))
             .formatted());
 }
 
