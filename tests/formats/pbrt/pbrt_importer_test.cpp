@@ -10,6 +10,7 @@
 #include "candela/core/error.h"
 #include "candela/formats/pbrt/pbrt_importer.h"
 #include "candela/formats/pbrt/pbrt_scene_loader.h"
+#include "candela/scene/enum_names.h"
 
 namespace candela::pbrt {
 namespace {
@@ -97,6 +98,25 @@ TEST(PbrtImporter, MaxComponentValueIsTheFilmsClamp) {
     EXPECT_FALSE(import(std::string("WorldBegin\n") + kLight).document["film"].contains("max_component_value"));
     EXPECT_NE(error_of("Film \"rgb\" \"float maxcomponentvalue\" 0\nWorldBegin\n" + std::string(kLight))
                   .find("maxcomponentvalue must be > 0"),
+              std::string::npos);
+}
+
+TEST(PbrtImporter, NamedSensorIsTheFilmsSensor) {
+    const ImportedScene s = import(std::string("Film \"rgb\" \"string sensor\" \"canon_eos_5d_mkiv\" "
+                                               "\"float iso\" 250 \"float whitebalance\" 4500\nWorldBegin\n") +
+                                   kLight);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+    EXPECT_EQ(s.document["film"]["sensor"], "canon_eos_5d_mkiv");
+    const Scene scene = load_imported_scene(s, kFile);
+    EXPECT_EQ(sensor_name(scene.film.camera_sensor), "canon_eos_5d_mkiv");
+    EXPECT_EQ(scene.film.iso, 250.0f);
+    EXPECT_EQ(scene.film.white_balance, 4500.0f);
+    // cie1931, pbrt-v4's default, writes nothing.
+    EXPECT_FALSE(import("Film \"rgb\" \"string sensor\" \"cie1931\"\nWorldBegin\n" + std::string(kLight))
+                     .document["film"]
+                     .contains("sensor"));
+    EXPECT_NE(error_of("Film \"rgb\" \"string sensor\" \"kodak\"\nWorldBegin\n" + std::string(kLight))
+                  .find("unknown sensor \"kodak\"; expected one of: canon_eos_100d"),
               std::string::npos);
 }
 

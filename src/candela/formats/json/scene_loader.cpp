@@ -247,9 +247,10 @@ void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget* budget) {
     check_camera_extent(camera, c);
 }
 
-// The sensor's keys (film/sensor.h): iso and exposure_time give the imaging ratio, which must
+// The sensor's keys (film/sensor.h): sensor names its responses (cie1931 or a camera); iso and exposure_time give the imaging ratio, which must
 // stay a positive float; white_balance is 0 or a temperature; max_component_value > 0.
 void read_sensor(JsonCursor& c, FilmSettings& film) {
+    if (auto v = c.get("sensor")) film.camera_sensor = *parse_sensor(v->choice("sensor", sensor_names()));
     std::optional<JsonCursor> last;  // where an imaging ratio out of float range is reported
     if (auto v = c.get("iso")) {
         film.iso = v->number_f(Bounds::above(0));

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "candela/formats/pbrt/pbrt_import_context.h"
+#include "candela/scene/enum_names.h"
 
 namespace candela::pbrt {
 namespace {
@@ -136,9 +137,13 @@ void translate_film(const RenderOptions& o, int& width, int& height, Json& film,
     if (auto name = p.get_string("filename")) film["filename"] = *name;
     if (auto iso = p.get_float("iso")) film["iso"] = *iso;
     if (auto wb = p.get_float("whitebalance")) film["white_balance"] = *wb;
-    if (auto sensor = p.get_string("sensor"); sensor && *sensor != "cie1931")
-        ctx.warn(p.find("sensor")->location,
-                 fmt::format("sensor \"{}\" is not supported; the CIE 1931 observer is used", *sensor));
+    // pbrt-v4's PixelSensor::Create: "cie1931" or a camera it has the responses of.
+    if (auto sensor = p.get_string("sensor")) {
+        if (!parse_sensor(*sensor))
+            p.fail(p.find("sensor"), fmt::format("unknown sensor \"{}\"; expected one of: {}", *sensor,
+                                                 names_list(sensor_names())));
+        if (*sensor != "cie1931") film["sensor"] = *sensor;
+    }
     // pbrt-v4's RGBFilm clamps each sample's sensor values to maxcomponentvalue (infinity: none).
     if (auto m = p.get_float("maxcomponentvalue")) {
         if (!(*m > 0)) p.fail(p.find("maxcomponentvalue"), "maxcomponentvalue must be > 0");
