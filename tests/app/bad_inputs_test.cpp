@@ -150,6 +150,8 @@ const BadInput kBadInputs[] = {
     {"object_nested_instance.json", kStructure, kError, "", 5, 35, "/objects/grove/shapes/0/type",
      "object \"grove\" cannot hold an instance: objects do not nest"},
     // --- unknown keys, types and names (24)
+    {"aov_space_unknown.json", kUnknownName, kError, "", 2, 47, "/film/aov_space",
+     "unknown AOV space \"screen\"; expected one of: camera, world"},
     {"aov_unknown.json", kUnknownName, kError, "", 3, 31, "/film/aovs/1",
      "unknown AOV layer \"normals\"; expected one of: albedo, depth, normal, position, spp, variance"},
     {"environment_unknown_mapping.json", kUnknownName, kError, "", 3, 52, "/lights/0/mapping",
@@ -460,6 +462,8 @@ const BadInput kBadInputs[] = {
      "AttributeEnd without a matching AttributeBegin"},
     {"pbrt_attribute_unclosed.pbrt", kPbrt, kError, "", 7, 1, "",
      "AttributeBegin without a matching AttributeEnd"},
+    {"pbrt_gbuffer_coordinate_system.pbrt", kPbrt, kError, "", 5, 3, "",
+     "unknown coordinate system \"raster\" for the gbuffer film; expected \"camera\" or \"world\""},
     {"pbrt_include_cycle.pbrt", kPbrt, kError, "", 8, 1, "",
      "pbrt_include_cycle.pbrt -> "},  // "include cycle: A -> A", the files as opened
     {"pbrt_malformed_parameter.pbrt", kPbrt, kError, "", 7, 16, "",

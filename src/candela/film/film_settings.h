@@ -87,8 +87,11 @@ struct FilmSettings : DisplayEncoding {
     // pbrt-v4's RGBFilm maxcomponentvalue: each sample's sensor values (its sensor RGB, CIE XYZ
     // for cie1931, times the imaging ratio) are scaled down so that the largest is at most this; infinity (the default): never.
     float max_component_value = std::numeric_limits<float>::infinity();
-    // The AOV layers written beside the image (film.aovs, --aov): none by default.
+    // The AOV layers written beside the image (film.aovs, --aov): none by default; the channel
+    // names they are written under and the space of position and normal.
     AovLayers aovs;
+    AovNames aov_names = AovNames::kCandela;
+    AovSpace aov_space = AovSpace::kWorld;
 };
 
 // The sensor's imaging ratio: exposure_time * iso / 100 (pbrt-v4's PixelSensor::Create), exactly 1

@@ -120,6 +120,33 @@ TEST(PbrtImporter, NamedSensorIsTheFilmsSensor) {
               std::string::npos);
 }
 
+TEST(PbrtImporter, GbufferFilmIsTheRgbFilmWithPbrtsAovLayers) {
+    const ImportedScene s = import(std::string("Film \"gbuffer\" \"string filename\" \"g.exr\"\nWorldBegin\n") + kLight);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+    const auto& film = s.document["film"];
+    EXPECT_EQ(film["aovs"], nlohmann::ordered_json::array({"albedo", "normal", "position", "variance"}));
+    EXPECT_EQ(film["aov_names"], "pbrt");
+    EXPECT_EQ(film["aov_space"], "camera");  // pbrt-v4's default coordinatesystem
+    const Scene scene = load_imported_scene(s, kFile);
+    EXPECT_TRUE(scene.film.aovs.has(AovLayer::kAlbedo) && scene.film.aovs.has(AovLayer::kNormal) &&
+                scene.film.aovs.has(AovLayer::kPosition) && scene.film.aovs.has(AovLayer::kVariance));
+    EXPECT_FALSE(scene.film.aovs.has(AovLayer::kDepth));
+    EXPECT_EQ(scene.film.aov_names, AovNames::kPbrt);
+    EXPECT_EQ(scene.film.aov_space, AovSpace::kCamera);
+    const ImportedScene w =
+        import(std::string("Film \"gbuffer\" \"string coordinatesystem\" \"world\"\nWorldBegin\n") + kLight);
+    EXPECT_EQ(load_imported_scene(w, kFile).film.aov_space, AovSpace::kWorld);
+    EXPECT_NE(error_of("Film \"gbuffer\" \"string coordinatesystem\" \"screen\"\nWorldBegin\n" + std::string(kLight))
+                  .find("unknown coordinate system \"screen\" for the gbuffer film"),
+              std::string::npos);
+    EXPECT_NE(error_of("Film \"gbuffer\" \"string filename\" \"g.png\"\nWorldBegin\n" + std::string(kLight))
+                  .find("EXR is the only format the gbuffer film writes"),
+              std::string::npos);
+    // The rgb film has no coordinate system: an unused parameter, as in pbrt-v4.
+    EXPECT_FALSE(import("Film \"rgb\" \"string coordinatesystem\" \"world\"\nWorldBegin\n" + std::string(kLight))
+                     .warnings.empty());
+}
+
 TEST(PbrtImporter, TransformsApplyInObjectSpaceFirst) {
     // pbrt post-multiplies the CTM: the directive written last acts on the object first.
     const ImportedScene s = import(std::string("WorldBegin\nTranslate 1 2 3\nScale 2 2 2\n"

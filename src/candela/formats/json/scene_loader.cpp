@@ -286,6 +286,14 @@ void read_film(JsonCursor c, FilmSettings& film, const CameraSettings& camera, s
     if (auto v = c.get("filter")) film.filter = read_filter(*v);
     if (auto v = c.get("crop_window")) film.crop_window = read_crop_window(*v, camera);
     if (auto v = c.get("aovs")) film.aovs = read_aov_layers(*v);
+    if (auto v = c.get("aov_names")) {
+        static constexpr std::array<std::string_view, 2> names = {"candela", "pbrt"};
+        film.aov_names = v->choice("AOV channel naming", names) == "pbrt" ? AovNames::kPbrt : AovNames::kCandela;
+    }
+    if (auto v = c.get("aov_space")) {
+        static constexpr std::array<std::string_view, 2> spaces = {"world", "camera"};
+        film.aov_space = v->choice("AOV space", spaces) == "camera" ? AovSpace::kCamera : AovSpace::kWorld;
+    }
     if (auto v = c.get("tonemap"))
         film.tonemap = *parse_tonemap(v->choice("tone map", tonemap_names()));
     if (auto v = c.get("exposure")) film.exposure = v->number_f(Bounds::closed_open(0, 1));
