@@ -21,9 +21,9 @@ namespace {
 // pbrt-v4's sensor names (PixelSensor::Create looks up NAME_r, NAME_g, NAME_b; Spectra::Init
 // lists these 17).
 constexpr std::array<std::string_view, 17> kPbrtSensors = {
-    "canon_eos_100d",     "canon_eos_1dx_mkii", "canon_eos_200d", "canon_eos_200d_mkii", "canon_eos_5d",
-    "canon_eos_5d_mkii",  "canon_eos_5d_mkiii", "canon_eos_5d_mkiv", "canon_eos_5ds",    "canon_eos_m",
-    "hasselblad_l1d_20c", "nikon_d810",         "nikon_d850",     "sony_ilce_6400",      "sony_ilce_7m3",
+    "canon_eos_100d",     "canon_eos_1dx_mkii", "canon_eos_200d",    "canon_eos_200d_mkii", "canon_eos_5d",
+    "canon_eos_5d_mkii",  "canon_eos_5d_mkiii", "canon_eos_5d_mkiv", "canon_eos_5ds",       "canon_eos_m",
+    "hasselblad_l1d_20c", "nikon_d810",         "nikon_d850",        "sony_ilce_6400",      "sony_ilce_7m3",
     "sony_ilce_7rm3",     "sony_ilce_9"};
 
 const CameraResponse& camera(std::string_view name) {
@@ -66,9 +66,10 @@ TEST(CameraSensors, ResponsesSumToWhatPbrtsTablesGive) {
         char channel;
         double sum;
     };
-    const Spot spots[] = {{"canon_eos_5d_mkiv", 'r', 50.03319474025001},  {"canon_eos_5d_mkiv", 'g', 102.30596695868408},
-                          {"canon_eos_5d_mkiv", 'b', 74.88637129445003},  {"sony_ilce_9", 'g', 96.08003497491819},
-                          {"nikon_d850", 'b', 66.69487830790077},         {"hasselblad_l1d_20c", 'r', 35.02180016489969}};
+    const Spot spots[] = {
+        {"canon_eos_5d_mkiv", 'r', 50.03319474025001}, {"canon_eos_5d_mkiv", 'g', 102.30596695868408},
+        {"canon_eos_5d_mkiv", 'b', 74.88637129445003}, {"sony_ilce_9", 'g', 96.08003497491819},
+        {"nikon_d850", 'b', 66.69487830790077},        {"hasselblad_l1d_20c", 'r', 35.02180016489969}};
     for (const Spot& s : spots) {
         const CameraResponse& c = camera(s.camera);
         const DenseSpectrum& d = s.channel == 'r' ? c.r : s.channel == 'g' ? c.g : c.b;
@@ -123,7 +124,8 @@ double normal_equation_defect(const Matrix3d& m, const Targets& t) {
         const Vec3d r = m * t.a[i] - t.b[i];
         for (int j = 0; j < 3; ++j)
             for (int k = 0; k < 3; ++k) g[j][k] += r[j] * t.a[i][k];
-        scale += std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z) * std::sqrt(t.a[i].x * t.a[i].x + t.a[i].y * t.a[i].y + t.a[i].z * t.a[i].z);
+        scale += std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z) *
+                 std::sqrt(t.a[i].x * t.a[i].x + t.a[i].y * t.a[i].y + t.a[i].z * t.a[i].z);
     }
     double worst = 0.0;
     for (auto& row : g)

@@ -13,7 +13,9 @@ namespace {
 
 // Camera-space coordinates of a world-space vector: its components along the frame's axes (unit
 // and perpendicular, so the dot products invert to_world).
-Vec3f to_camera(const CameraFrame& f, const Vec3f& v) { return Vec3f(dot(v, f.right), dot(v, f.up), dot(v, f.forward)); }
+Vec3f to_camera(const CameraFrame& f, const Vec3f& v) {
+    return Vec3f(dot(v, f.right), dot(v, f.up), dot(v, f.forward));
+}
 
 }  // namespace
 

@@ -13,8 +13,8 @@
 // GBufferFilm default: x right, y up, z the view direction, origin at the camera).
 #include "candela/camera/camera_frame.h"
 #include "candela/film/film.h"
-#include "candela/math/ray.h"
 #include "candela/integrators/ray_counters.h"
+#include "candela/math/ray.h"
 #include "candela/sampling/sampler.h"
 
 namespace candela {
@@ -36,8 +36,8 @@ class AovTracer {
   private:
     const Scene& scene_;
     const Accelerator& accel_;
-    bool camera_space_;   // film.aov_space is kCamera
-    CameraFrame frame_;   // the camera's, for camera space
+    bool camera_space_;  // film.aov_space is kCamera
+    CameraFrame frame_;  // the camera's, for camera space
 };
 
 // The longest chain of perfectly specular vertices followed before giving up (albedo and

@@ -56,7 +56,19 @@ int camera_response_index(std::string_view name) {
 
 std::span<const DenseSpectrum> color_checker_swatches() {
     static const std::array<DenseSpectrum, kColorCheckerSwatches> all = [] {
-        const std::array<std::span<const float>, kColorCheckerSwatches> pairs = {std::span<const float>(kColorCheckerSwatch1), std::span<const float>(kColorCheckerSwatch2), std::span<const float>(kColorCheckerSwatch3), std::span<const float>(kColorCheckerSwatch4), std::span<const float>(kColorCheckerSwatch5), std::span<const float>(kColorCheckerSwatch6), std::span<const float>(kColorCheckerSwatch7), std::span<const float>(kColorCheckerSwatch8), std::span<const float>(kColorCheckerSwatch9), std::span<const float>(kColorCheckerSwatch10), std::span<const float>(kColorCheckerSwatch11), std::span<const float>(kColorCheckerSwatch12), std::span<const float>(kColorCheckerSwatch13), std::span<const float>(kColorCheckerSwatch14), std::span<const float>(kColorCheckerSwatch15), std::span<const float>(kColorCheckerSwatch16), std::span<const float>(kColorCheckerSwatch17), std::span<const float>(kColorCheckerSwatch18), std::span<const float>(kColorCheckerSwatch19), std::span<const float>(kColorCheckerSwatch20), std::span<const float>(kColorCheckerSwatch21), std::span<const float>(kColorCheckerSwatch22), std::span<const float>(kColorCheckerSwatch23), std::span<const float>(kColorCheckerSwatch24)};
+        const std::array<std::span<const float>, kColorCheckerSwatches> pairs = {
+            std::span<const float>(kColorCheckerSwatch1),  std::span<const float>(kColorCheckerSwatch2),
+            std::span<const float>(kColorCheckerSwatch3),  std::span<const float>(kColorCheckerSwatch4),
+            std::span<const float>(kColorCheckerSwatch5),  std::span<const float>(kColorCheckerSwatch6),
+            std::span<const float>(kColorCheckerSwatch7),  std::span<const float>(kColorCheckerSwatch8),
+            std::span<const float>(kColorCheckerSwatch9),  std::span<const float>(kColorCheckerSwatch10),
+            std::span<const float>(kColorCheckerSwatch11), std::span<const float>(kColorCheckerSwatch12),
+            std::span<const float>(kColorCheckerSwatch13), std::span<const float>(kColorCheckerSwatch14),
+            std::span<const float>(kColorCheckerSwatch15), std::span<const float>(kColorCheckerSwatch16),
+            std::span<const float>(kColorCheckerSwatch17), std::span<const float>(kColorCheckerSwatch18),
+            std::span<const float>(kColorCheckerSwatch19), std::span<const float>(kColorCheckerSwatch20),
+            std::span<const float>(kColorCheckerSwatch21), std::span<const float>(kColorCheckerSwatch22),
+            std::span<const float>(kColorCheckerSwatch23), std::span<const float>(kColorCheckerSwatch24)};
         std::array<DenseSpectrum, kColorCheckerSwatches> a;
         for (size_t i = 0; i < a.size(); ++i) a[i] = dense_from_pairs(pairs[i]);
         return a;

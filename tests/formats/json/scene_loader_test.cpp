@@ -273,7 +273,8 @@ TEST(SceneLoaderFilm, AovNamesAndSpaceAreRead) {
     const Scene s = load_json(R"({"film": {"aovs": ["albedo"], "aov_names": "pbrt", "aov_space": "camera"}})");
     EXPECT_EQ(s.film.aov_names, AovNames::kPbrt);
     EXPECT_EQ(s.film.aov_space, AovSpace::kCamera);
-    EXPECT_EQ(load_json(R"({"film": {"aov_names": "candela", "aov_space": "world"}})").film.aov_space, AovSpace::kWorld);
+    EXPECT_EQ(load_json(R"({"film": {"aov_names": "candela", "aov_space": "world"}})").film.aov_space,
+              AovSpace::kWorld);
     EXPECT_EQ(load_error(R"({"film": {"aov_space": "screen"}})").message(),
               "unknown AOV space \"screen\"; expected one of: camera, world");
     EXPECT_EQ(load_error(R"({"film": {"aov_names": "mitsuba"}})").where().json_pointer, "/film/aov_names");
@@ -290,9 +291,10 @@ TEST(SceneLoader, UnknownKeysInEverySectionAreErrors) {
               "unknown key \"lookat\" (did you mean \"look_at\"?)");
     EXPECT_EQ(load_error(R"({"film": {"tone_map": "aces"}})").message(),
               "unknown key \"tone_map\" (did you mean \"tonemap\"?)");
-    EXPECT_EQ(load_error(R"({"film": {"pixelbounds": [0, 8, 0, 8]}})").message(),
-              "unknown key \"pixelbounds\"; expected one of: aov_names, aov_space, aovs, crop_window, exposure, "
-              "exposure_time, filename, filter, gamma, iso, max_component_value, sensor, tonemap, transfer, white_balance");
+    EXPECT_EQ(
+        load_error(R"({"film": {"pixelbounds": [0, 8, 0, 8]}})").message(),
+        "unknown key \"pixelbounds\"; expected one of: aov_names, aov_space, aovs, crop_window, exposure, "
+        "exposure_time, filename, filter, gamma, iso, max_component_value, sensor, tonemap, transfer, white_balance");
     // A misspelt section is reported before anything that depends on it.
     SceneError e = load_error(R"({"shapes": [{"type": "sphere", "center": [0, 0, 0],
                                               "radius": 1, "material": "m"}],

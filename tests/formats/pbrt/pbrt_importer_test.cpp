@@ -121,7 +121,8 @@ TEST(PbrtImporter, NamedSensorIsTheFilmsSensor) {
 }
 
 TEST(PbrtImporter, GbufferFilmIsTheRgbFilmWithPbrtsAovLayers) {
-    const ImportedScene s = import(std::string("Film \"gbuffer\" \"string filename\" \"g.exr\"\nWorldBegin\n") + kLight);
+    const ImportedScene s =
+        import(std::string("Film \"gbuffer\" \"string filename\" \"g.exr\"\nWorldBegin\n") + kLight);
     EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
     const auto& film = s.document["film"];
     EXPECT_EQ(film["aovs"], nlohmann::ordered_json::array({"albedo", "normal", "position", "variance"}));

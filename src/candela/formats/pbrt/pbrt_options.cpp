@@ -124,7 +124,8 @@ void translate_gbuffer(const Params& p, Json& film) {
     const std::string space = p.get_string("coordinatesystem").value_or("camera");
     if (space != "camera" && space != "world")
         p.fail(p.find("coordinatesystem"),
-               fmt::format("unknown coordinate system \"{}\" for the gbuffer film; expected \"camera\" or \"world\"", space));
+               fmt::format("unknown coordinate system \"{}\" for the gbuffer film; expected \"camera\" or \"world\"",
+                           space));
     film["aov_space"] = space;
     // pbrt-v4 writes a gbuffer only as OpenEXR (its default file name is pbrt.exr).
     if (auto name = p.get_string("filename"); name && !name->ends_with(".exr") && !name->ends_with(".EXR"))
@@ -160,8 +161,8 @@ void translate_film(const RenderOptions& o, int& width, int& height, Json& film,
     // pbrt-v4's PixelSensor::Create: "cie1931" or a camera it has the responses of.
     if (auto sensor = p.get_string("sensor")) {
         if (!parse_sensor(*sensor))
-            p.fail(p.find("sensor"), fmt::format("unknown sensor \"{}\"; expected one of: {}", *sensor,
-                                                 names_list(sensor_names())));
+            p.fail(p.find("sensor"),
+                   fmt::format("unknown sensor \"{}\"; expected one of: {}", *sensor, names_list(sensor_names())));
         if (*sensor != "cie1931") film["sensor"] = *sensor;
     }
     // pbrt-v4's RGBFilm clamps each sample's sensor values to maxcomponentvalue (infinity: none).
