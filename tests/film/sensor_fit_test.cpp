@@ -241,6 +241,19 @@ TEST(CameraSensorWhiteBalance, TheBalancedDaylightBecomesGrey) {
     }
 }
 
+TEST(CameraSensor, MakeSensorTakesTheFilmsSensor) {
+    FilmSettings film;
+    EXPECT_FALSE(make_sensor(film).is_camera());
+    film.camera_sensor = camera_response_index("sony_ilce_7m3");
+    const Sensor camera = make_sensor(film);
+    EXPECT_TRUE(camera.is_camera());
+    EXPECT_TRUE(camera.white_balanced());  // 6500 K, pbrt-v4's default for a camera
+    // Its colours are the camera's: a saturated red is not what the CIE observer makes of it.
+    const Rgb red(0.8f, 0.1f, 0.05f);
+    const Rgb a = camera.rgb_to_rgb(red), b = Sensor().rgb_to_rgb(red);
+    EXPECT_GT(std::abs(a.g - b.g) + std::abs(a.b - b.b) + std::abs(a.r - b.r), 1e-3f);
+}
+
 TEST(CameraSensorWhiteBalance, ZeroMeansPbrtsDefaultOf6500K) {
     const int i = camera_response_index("nikon_d850");
     const Rgb a = Sensor(1.0f, 0.0f, 1e30f, i).rgb_to_rgb(Rgb(0.3f, 0.5f, 0.7f));
