@@ -470,6 +470,8 @@ const BadInput kBadInputs[] = {
      "parameter \"radius\" has no type (expected \"type name\", e.g. \"float radius\")"},
     {"pbrt_mesh_index_out_of_range.pbrt", kPbrt, kError, "", 8, 5, "",
      "trianglemesh: index 3 is out of range (P has 3 points)"},
+    {"pbrt_unknown_light_sampler.pbrt", kPbrt, kError, "", 5, 19, "",
+     "unknown lightsampler \"bhv\"; expected one of: bvh, exhaustive, power, uniform"},
     {"pbrt_missing_include.pbrt", kPbrt, kError, "", 7, 1, "",
      "pbrt_missing_include_geometry.pbrt\": No such file or directory"},
     {"pbrt_number_overflow.pbrt", kPbrt, kError, "", 7, 31, "",

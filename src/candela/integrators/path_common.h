@@ -183,9 +183,9 @@ inline Color sample_direct_light(const PathVertex& v, const LightSet& lights, co
     if (v.bsdf.is_delta_only() || lights.empty()) return Color(0.0f);
     std::optional<LightSample> ls;
     if constexpr (kSpectral)
-        ls = lights.sample(v.hit.p, n.uc, n.u, *lambda, cache);
+        ls = lights.sample(v.hit.p, v.frame.n, n.uc, n.u, *lambda, cache);
     else
-        ls = lights.sample(v.hit.p, n.uc, n.u);
+        ls = lights.sample(v.hit.p, v.frame.n, n.uc, n.u);
     if (!ls || ls->pdf <= 0.0f || ls->Le.is_black()) return Color(0.0f);
     Vec3f wi = v.frame.to_local(ls->wi);
     Color f = v.bsdf.eval(v.wo, wi, TransportMode::kRadiance) * std::abs(wi.z);

@@ -18,7 +18,7 @@ Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters
     Ray ray = camera_ray;
     bool after_delta = false;  // the last bounce was a delta lobe: NEE could not have found the light
     float prev_bsdf_pdf = 0.0f;
-    Vec3f prev_p;
+    Vec3f prev_p, prev_n;  // the last vertex and its shading normal, where light sampling started
     // Spectral mode: the untextured materials' BSDFs and the lights' emission at this path's
     // wavelengths, which do not change along it (spectral_bsdf_cache.h, spectral_emission_cache.h).
     // Plain locals (RGB mode never reads them, and the compiler drops them there), not
@@ -50,7 +50,7 @@ Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters
             if (bounces == 0 || after_delta) {
                 L += beta * Le;
             } else if (scene_.integrator.mis) {
-                float light_pdf = lights_.pdf(prev_p, hit->shape_id, hit->p, hit->ng);
+                float light_pdf = lights_.pdf(prev_p, prev_n, hit->shape_id, hit->p, hit->ng);
                 L += beta * Le * power_heuristic(prev_bsdf_pdf, light_pdf);
             }
             // Without MIS, NEE alone accounts for light reached after a non-delta bounce.
@@ -72,6 +72,7 @@ Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters
         after_delta = bs->is_delta;
         prev_bsdf_pdf = bs->pdf;
         prev_p = hit->p;
+        prev_n = v.frame.n;
         if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, roulette_number)) break;
         ++bounces;
     }

@@ -87,11 +87,12 @@ struct VolumePath {
 
     const Color* lambda() const { return pc.ch.lambda; }
 
-    std::optional<LightSample> sample_light(const Vec3f& p, const LightNumbers& n) const {
+    // `p_n`: the surface normal at p, zero in a medium (for LightSelection::kBvh).
+    std::optional<LightSample> sample_light(const Vec3f& p, const Vec3f& p_n, const LightNumbers& n) const {
         if constexpr (kSpectral)
-            return lights.sample(p, n.uc, n.u, *pc.ch.lambda, emission_cache);
+            return lights.sample(p, p_n, n.uc, n.u, *pc.ch.lambda, emission_cache);
         else
-            return lights.sample(p, n.uc, n.u);
+            return lights.sample(p, p_n, n.uc, n.u);
     }
 
     // The transmittance from the ray's origin to its end (ray.tmax, or infinity), through media and
@@ -152,9 +153,9 @@ struct VolumePath {
     // `medium`: beta f T Le / (average of the rescaled probabilities), pbrt-v4's SampleLd.
     // `medium_of(wi)`: the medium the shadow ray starts in.
     template <class F, class Pdf, class Spawn, class MediumOf>
-    Color direct_light(const Vec3f& p, const LightNumbers& n, const Color& beta, const Color& r_p, F&& f, Pdf&& pdf,
+    Color direct_light(const Vec3f& p, const Vec3f& p_n, const LightNumbers& n, const Color& beta, const Color& r_p, F&& f, Pdf&& pdf,
                        Spawn&& spawn, MediumOf&& medium_of, Rng& rng) const {
-        std::optional<LightSample> ls = sample_light(p, n);
+        std::optional<LightSample> ls = sample_light(p, p_n, n);
         if (!ls || ls->pdf <= 0.0f || ls->Le.is_black()) return Color(0.0f);
         const Color f_hat = f(ls->wi);
         if (f_hat.is_black()) return Color(0.0f);
@@ -192,6 +193,7 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
     int depth = 0;
     float eta_scale = 1.0f;
     Vec3f prev_p;  // the last scattering point, where light sampling would have started
+    Vec3f prev_n;  // its shading normal; zero in a medium (LightSelection::kBvh reads it)
     Ray ray = camera_ray;
     uint32_t medium = scene_.camera_medium;
     int medium_events = 0;
@@ -252,7 +254,7 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
                                                        : Ray{p, ls.p - p, 0.0f, 1.0f - kShadowEpsilon};
                                 };
                                 if (next_event_ && !lights_.empty())
-                                    L += path.direct_light(p, light_numbers, beta, r_u, phase, phase_pdf, spawn,
+                                    L += path.direct_light(p, Vec3f{}, light_numbers, beta, r_u, phase, phase_pdf, spawn,
                                                            [&](const Vec3f&) { return medium; }, rng);
                                 const PhaseSample ps = sample_henyey_greenstein(wo, g, bsdf_numbers.u);
                                 if (!(ps.p > 0.0f)) {
@@ -262,6 +264,7 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
                                 // beta *= p / pdf, which is 1 for a phase function sampled exactly.
                                 r_l = r_u / ps.p;
                                 prev_p = p;
+                                prev_n = Vec3f{};
                                 scattered = true;
                                 ray = Ray{p, ps.wi, 0.0f, kInfinity};
                                 specular_bounce = false;
@@ -307,7 +310,7 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
             if (depth == 0 || specular_bounce || !next_event_)
                 L += beta * Le / pc.average(r_u);
             else if (settings.mis)
-                L += beta * Le / pc.average(r_u + r_l * lights_.pdf(prev_p, hit->shape_id, hit->p, hit->ng));
+                L += beta * Le / pc.average(r_u + r_l * lights_.pdf(prev_p, prev_n, hit->shape_id, hit->p, hit->ng));
         }
 
         const Shape& shape = scene_.shapes[hit->shape_id];
@@ -329,7 +332,7 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
             auto spawn = [&](const LightSample& ls) { return ls.infinite ? spawn_ray(*hit, ls.wi) : spawn_ray_to(*hit, ls.p); };
             // The shadow ray's medium: that of the side of the surface it leaves by.
             auto medium_of = [&](const Vec3f& wi) { return medium_after(shape, *hit, wi, medium); };
-            L += path.direct_light(hit->p, light_numbers, beta, r_u, f, pdf, spawn, medium_of, rng);
+            L += path.direct_light(hit->p, v.frame.n, light_numbers, beta, r_u, f, pdf, spawn, medium_of, rng);
         }
         std::optional<BsdfSample> bs = continue_path(v, bsdf_numbers, beta, ray);
         if (!bs) break;
@@ -337,6 +340,7 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
         specular_bounce = bs->is_delta;
         if (bs->is_transmission) eta_scale *= sqr(bs->eta);
         prev_p = hit->p;
+        prev_n = v.frame.n;
         medium = medium_after(shape, *hit, ray.d, medium);
         if (!survive_volume_roulette(beta, r_u, eta_scale, depth, settings, pc, roulette_number)) break;
     }

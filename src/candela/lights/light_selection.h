@@ -3,7 +3,8 @@
 
 namespace candela {
 
-// kPower: probability proportional to emitted power (pbrt's PowerLightSampler); kUniform: equal.
-enum class LightSelection { kPower, kUniform };
+// kPower: probability proportional to emitted power (pbrt's PowerLightSampler); kUniform: equal;
+// kBvh: by importance at the point lit (pbrt-v4's BVHLightSampler, light_bvh.h).
+enum class LightSelection { kPower, kUniform, kBvh };
 
 }  // namespace candela

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "candela/core/check.h"
+#include "candela/lights/emitter_bounds.h"
 
 namespace candela {
 
@@ -33,6 +34,11 @@ LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere>
                    std::optional<EnvironmentLight> environment, float scene_radius)
     : light_of_shape_(shapes.size(), kNoLight), environment_(std::move(environment)) {
     std::vector<float> weights;
+    // kBvh: each light's bounds (or none: infinite), by selection index. The weights above stay
+    // the powers, unused but for keeping selection_ the same size.
+    const bool bvh = selection == LightSelection::kBvh;
+    std::vector<std::pair<uint32_t, LightBounds>> bounded;
+    std::vector<uint32_t> infinite;
     for (size_t id = 0; id < shapes.size(); ++id) {
         const Shape& shape = shapes[id];
         if (shape.emission.is_black()) continue;
@@ -41,14 +47,16 @@ LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere>
         float area = visit([](const auto& e) { return e.area(); }, light.emitter);
         if (!(area > 0.0f) || !std::isfinite(area)) continue;
         light_of_shape_[id] = static_cast<uint32_t>(lights_.size());
-        weights.push_back(selection == LightSelection::kPower ? area_light_power(light) : 1.0f);
+        if (bvh) bounded.emplace_back(uint32_t(weights.size()), area_light_bounds(shape, meshes, spheres, disks, area));
+        weights.push_back(selection != LightSelection::kUniform ? area_light_power(light) : 1.0f);
         lights_.push_back(std::move(light));
     }
     if (environment_) {
         float power = environment_->power(scene_radius);
-        if (power > 0.0f && std::isfinite(power))
-            weights.push_back(selection == LightSelection::kPower ? power : 1.0f);
-        else
+        if (power > 0.0f && std::isfinite(power)) {
+            if (bvh) infinite.push_back(uint32_t(weights.size()));
+            weights.push_back(selection != LightSelection::kUniform ? power : 1.0f);
+        } else
             environment_.reset();  // black: nothing to see or sample
     }
     delta_begin_ = static_cast<uint32_t>(weights.size());
@@ -56,7 +64,13 @@ LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere>
         const DeltaLight& light = delta_lights[i];
         float power = delta_light_power(light, scene_radius);
         if (!(power > 0.0f) || !std::isfinite(power)) continue;  // black: it would light nothing
-        weights.push_back(selection == LightSelection::kPower ? power : 1.0f);
+        if (bvh) {
+            if (std::optional<LightBounds> b = delta_light_bounds(light))
+                bounded.emplace_back(uint32_t(weights.size()), *b);
+            else
+                infinite.push_back(uint32_t(weights.size()));
+        }
+        weights.push_back(selection != LightSelection::kUniform ? power : 1.0f);
         delta_lights_.push_back(light);
         delta_source_.push_back(static_cast<uint32_t>(i));
     }
@@ -64,6 +78,11 @@ LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere>
     size_ = weights.size();
     selection_ = Distribution1D(weights);
     for (size_t i = 0; i < weights.size(); ++i) selection_probability_.push_back(selection_.probability(i));
+    if (bvh) {
+        bvh_.emplace(std::move(bounded), std::move(infinite), static_cast<uint32_t>(size_));
+        // The environment's share is the same at every point: environment_pdf() reads it here.
+        if (environment_) selection_probability_[lights_.size()] = bvh_->infinite_pmf();
+    }
 }
 
 void LightSet::set_spectra(std::span<const SpectralColor> shape_emission, std::span<const SpectralColor> delta_emission) {
@@ -92,13 +111,23 @@ float LightSet::environment_pdf(const Vec3f& w) const {
 }
 
 template <bool kSpectral>
-CANDELA_HD std::optional<LightSample> LightSet::sample_in(const Vec3f& ref, float uc, const Vec2f& u,
-                                                          const Color* lambda, SpectralEmissionCache* cache) const {
+CANDELA_HD std::optional<LightSample> LightSet::sample_in(const Vec3f& ref, const Vec3f& ref_n, float uc,
+                                                          const Vec2f& u, const Color* lambda,
+                                                          SpectralEmissionCache* cache) const {
     // The one object returned on every path, built in place where the caller receives it.
     std::optional<LightSample> result;
     if (selection_.empty()) return result;
-    const uint32_t chosen = uses_choice() ? selection_.sample_discrete(uc).index : 0;
-    const float probability = selection_probability_[chosen];
+    uint32_t chosen;
+    float probability;
+    if (bvh_) {
+        std::optional<LightBvh::Choice> c = bvh_->sample(ref, ref_n, uc);
+        if (!c) return result;  // no light can reach ref
+        chosen = c->light;
+        probability = c->pmf;
+    } else {
+        chosen = uses_choice() ? selection_.sample_discrete(uc).index : 0;
+        probability = selection_probability_[chosen];
+    }
     if (chosen >= lights_.size()) {  // the environment or a delta light
         if (chosen >= delta_begin_) {
             sample_delta_light_at<kSpectral>(ref, chosen - delta_begin_, probability, lambda, cache, result);
@@ -145,12 +174,14 @@ CANDELA_HD void LightSet::sample_delta_light_at(const Vec3f& ref, uint32_t index
     result.emplace(LightSample{ds->p, -ds->wi, ds->wi, ds->infinite, true, Li, probability});
 }
 
-CANDELA_HD float LightSet::pdf(const Vec3f& ref, uint32_t shape_id, const Vec3f& p_light, const Vec3f& n_light) const {
+CANDELA_HD float LightSet::pdf(const Vec3f& ref, const Vec3f& ref_n, uint32_t shape_id, const Vec3f& p_light,
+                               const Vec3f& n_light) const {
     uint32_t li = light_index(shape_id);
     if (li == kNoLight) return 0.0f;
     float emitter_pdf =
         visit_emitter(lights_[li].emitter, [&](const auto& e) { return e.pdf(ref, p_light, n_light); });
-    return selection_probability_[li] * emitter_pdf;
+    const float probability = bvh_ ? bvh_->pmf(ref, ref_n, li) : selection_probability_[li];
+    return probability * emitter_pdf;
 }
 
 template <bool kSpectral>
@@ -169,12 +200,27 @@ CANDELA_HD float LightSet::selection_probability(uint32_t shape_id) const {
     return li == kNoLight ? 0.0f : selection_probability_[li];
 }
 
+CANDELA_HD float LightSet::selection_probability(const Vec3f& ref, const Vec3f& ref_n, uint32_t shape_id) const {
+    uint32_t li = light_index(shape_id);
+    if (li == kNoLight) return 0.0f;
+    return bvh_ ? bvh_->pmf(ref, ref_n, li) : selection_probability_[li];
+}
+
+CANDELA_HD float LightSet::delta_selection_probability(const Vec3f& ref, const Vec3f& ref_n, uint32_t index) const {
+    for (size_t i = 0; i < delta_source_.size(); ++i) {
+        if (delta_source_[i] != index) continue;
+        const uint32_t chosen = delta_begin_ + static_cast<uint32_t>(i);
+        return bvh_ ? bvh_->pmf(ref, ref_n, chosen) : selection_probability_[chosen];
+    }
+    return 0.0f;
+}
+
 template Color LightSet::environment_radiance_in<false>(const Vec3f&, const Color*) const;
 template Color LightSet::environment_radiance_in<true>(const Vec3f&, const Color*) const;
-template std::optional<LightSample> LightSet::sample_in<false>(const Vec3f&, float, const Vec2f&, const Color*,
-                                                               SpectralEmissionCache*) const;
-template std::optional<LightSample> LightSet::sample_in<true>(const Vec3f&, float, const Vec2f&, const Color*,
-                                                              SpectralEmissionCache*) const;
+template std::optional<LightSample> LightSet::sample_in<false>(const Vec3f&, const Vec3f&, float, const Vec2f&,
+                                                               const Color*, SpectralEmissionCache*) const;
+template std::optional<LightSample> LightSet::sample_in<true>(const Vec3f&, const Vec3f&, float, const Vec2f&,
+                                                              const Color*, SpectralEmissionCache*) const;
 template Color LightSet::emitted_in<false>(uint32_t, const Vec3f&, const Vec3f&, const Color*,
                                            SpectralEmissionCache*) const;
 template Color LightSet::emitted_in<true>(uint32_t, const Vec3f&, const Vec3f&, const Color*,

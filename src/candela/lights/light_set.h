@@ -14,6 +14,11 @@
 // A shape with emission but zero area (degenerate triangles) cannot be hit or sampled and is not
 // a light. Random numbers: uc picks the light (only read when there are several: uses_choice());
 // u picks the triangle of a mesh and places the point (MeshEmitter::sample).
+//
+// With LightSelection::kBvh the choice depends on the point lit: pbrt-v4's BVH light sampler
+// (light_bvh.h) over the area, point and spot lights, with the environment and directional lights
+// as its "infinite" lights. sample() and pdf() then take the point's surface normal (shading
+// normal; zero in a medium), as pbrt-v4's LightSampleContext does.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -27,6 +32,7 @@
 #include "candela/lights/area_light.h"
 #include "candela/lights/delta_light.h"
 #include "candela/lights/environment_light.h"
+#include "candela/lights/light_bvh.h"
 #include "candela/lights/light_sample.h"
 #include "candela/lights/light_selection.h"
 #include "candela/lights/spectral_emission_cache.h"
@@ -83,18 +89,33 @@ class LightSet {
     // nullopt when nothing can be sampled (no lights, a zero pdf, or a delta light that sends
     // nothing to ref). A point on the back of a one-sided light comes back with black Le and its
     // true pdf (a sphere of reverse orientation seen from outside shows only its back).
+    // `ref_n`: the surface normal at ref, or zero in a medium (read only by kBvh).
+    CANDELA_HD std::optional<LightSample> sample(const Vec3f& ref, const Vec3f& ref_n, float uc,
+                                                 const Vec2f& u) const {
+        return sample_in<false>(ref, ref_n, uc, u, nullptr, nullptr);
+    }
+    CANDELA_HD std::optional<LightSample> sample(const Vec3f& ref, const Vec3f& ref_n, float uc, const Vec2f& u,
+                                                 const Color& lambda, SpectralEmissionCache* cache = nullptr) const {
+        return sample_in<true>(ref, ref_n, uc, u, &lambda, cache);
+    }
+    // The same as seen from a point in a medium (no normal).
     CANDELA_HD std::optional<LightSample> sample(const Vec3f& ref, float uc, const Vec2f& u) const {
-        return sample_in<false>(ref, uc, u, nullptr, nullptr);
+        return sample_in<false>(ref, Vec3f{}, uc, u, nullptr, nullptr);
     }
     CANDELA_HD std::optional<LightSample> sample(const Vec3f& ref, float uc, const Vec2f& u, const Color& lambda,
                                                  SpectralEmissionCache* cache = nullptr) const {
-        return sample_in<true>(ref, uc, u, &lambda, cache);
+        return sample_in<true>(ref, Vec3f{}, uc, u, &lambda, cache);
     }
 
     // The pdf per solid angle (selection included) with which sample() from `ref` would have
     // produced point `p_light` with front normal `n_light` on shape `shape_id`; 0 if that shape
-    // is not a light. Bit-identical to the pdf sample() returned for that point.
-    CANDELA_HD float pdf(const Vec3f& ref, uint32_t shape_id, const Vec3f& p_light, const Vec3f& n_light) const;
+    // is not a light. Bit-identical to the pdf sample() returned for that point. `ref_n` as for
+    // sample(); the form without it is for a point in a medium.
+    CANDELA_HD float pdf(const Vec3f& ref, const Vec3f& ref_n, uint32_t shape_id, const Vec3f& p_light,
+                         const Vec3f& n_light) const;
+    CANDELA_HD float pdf(const Vec3f& ref, uint32_t shape_id, const Vec3f& p_light, const Vec3f& n_light) const {
+        return pdf(ref, Vec3f{}, shape_id, p_light, n_light);
+    }
 
     // Radiance leaving a point of shape `shape_id` with front normal n in direction w (unit,
     // pointing away from the surface); black for non-emitters and from behind one-sided ones.
@@ -107,7 +128,17 @@ class LightSet {
     }
 
     // The probability that sample() picks the light of shape `shape_id`; 0 if it is not a light.
+    // For kPower and kUniform (the same at every point); kBvh: selection_probability(ref, ref_n, ...).
     CANDELA_HD float selection_probability(uint32_t shape_id) const;
+    // The probability that sample() from (ref, ref_n) picks the light of shape `shape_id`.
+    CANDELA_HD float selection_probability(const Vec3f& ref, const Vec3f& ref_n, uint32_t shape_id) const;
+    // The probability that sample() from (ref, ref_n) picks delta light `index` (in the order the
+    // constructor got them); 0 for one it left out.
+    CANDELA_HD float delta_selection_probability(const Vec3f& ref, const Vec3f& ref_n, uint32_t index) const;
+    // The probability that sample() picks the environment (the same at every point); 0 without one.
+    CANDELA_HD float environment_selection_probability() const {
+        return environment_ ? selection_probability_[lights_.size()] : 0.0f;
+    }
 
   private:
     static constexpr uint32_t kNoLight = 0xffffffffu;
@@ -117,7 +148,7 @@ class LightSet {
     template <bool kSpectral>
     Color environment_radiance_in(const Vec3f& w, const Color* lambda) const;
     template <bool kSpectral>
-    CANDELA_HD std::optional<LightSample> sample_in(const Vec3f& ref, float uc, const Vec2f& u,
+    CANDELA_HD std::optional<LightSample> sample_in(const Vec3f& ref, const Vec3f& ref_n, float uc, const Vec2f& u,
                                                     const Color* lambda, SpectralEmissionCache* cache) const;
     template <bool kSpectral>
     CANDELA_HD Color emitted_in(uint32_t shape_id, const Vec3f& n, const Vec3f& w, const Color* lambda,
@@ -151,7 +182,9 @@ class LightSet {
     size_t size_ = 0;                       // area lights, environment and delta lights
     Distribution1D selection_;              // over lights_, then the environment, then delta_lights_
     std::vector<float> selection_probability_;  // selection_.probability(i), computed once: it
-                                                // divides in double, and NEE and MIS ask per vertex
+                                                // divides in double, and NEE and MIS ask per vertex;
+                                                // with kBvh, the environment's is the BVH's share
+    std::optional<LightBvh> bvh_;  // kBvh only: the choice by importance, over the selection indices
 };
 
 }  // namespace candela

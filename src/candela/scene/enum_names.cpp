@@ -14,7 +14,7 @@ namespace {
 // table[underlying value]. Adding an enumerator means adding its name here.
 constexpr std::array<std::string_view, 8> kIntegratorTypeNames = {"path",  "bsdf",   "whitted", "normals",
                                                                   "depth", "albedo", "ao",      "volpath"};
-constexpr std::array<std::string_view, 2> kLightSelectionNames = {"power", "uniform"};
+constexpr std::array<std::string_view, 3> kLightSelectionNames = {"power", "uniform", "bvh"};
 constexpr std::array<std::string_view, 2> kSamplerTypeNames = {"independent", "sobol"};
 constexpr std::array<std::string_view, 4> kFilterTypeNames = {"box", "tent", "gaussian", "smallpt"};
 constexpr std::array<std::string_view, 4> kTonemapNames = {"clamp", "exposure", "reinhard", "aces"};

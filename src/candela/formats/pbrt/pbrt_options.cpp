@@ -267,7 +267,21 @@ bool translate_integrator(const RenderOptions& o, Json& integrator, ImportContex
         if (max_depth < 0) p.fail(p.find("maxdepth"), "maxdepth must be >= 0");
         if (p.bool_or("regularize", false))
             ctx.warn(p.find("regularize")->location, "regularize is not supported; paths are not regularized");
-        p.string_or("lightsampler", "bvh");  // candela chooses lights by power: the same image
+        // pbrt-v4's light samplers. Its default, bvh, is left to the scene to ask for: candela
+        // imports a file without "lightsampler" with its own default, power (the same image,
+        // other noise; docs/PBRT.md), so that existing images keep their bits.
+        const std::string sampler = p.string_or("lightsampler", "");
+        if (sampler == "bvh" || sampler == "power" || sampler == "uniform") {
+            integrator["light_selection"] = sampler;
+        } else if (sampler == "exhaustive") {
+            ctx.warn(p.find("lightsampler")->location,
+                     "lightsampler \"exhaustive\" is rendered with \"bvh\" (the same image, other noise)");
+            integrator["light_selection"] = "bvh";
+        } else if (!sampler.empty()) {
+            p.fail(p.find("lightsampler"), fmt::format("unknown lightsampler \"{}\"; expected one of: bvh, exhaustive, "
+                                                       "power, uniform",
+                                                       sampler));
+        }
     }
     integrator["type"] = type;
     // pbrt-v4's maxdepth 0 renders emitters seen directly only; candela's max_depth counts the
