@@ -74,13 +74,15 @@ class QuadricEmitter {
         return Vec3d(rho * c, rho * s, z);
     }
 
+    // The world area density of sample() at a point with unit world normal n.
+    CANDELA_HD float area_pdf(const Vec3f& n) const {
+        return static_cast<float>(inv_object_area_ / area_scale(Vec3d(n)));
+    }
+
   private:
     // J = |det M| / |M^T n| (above); to_object's normal map is M^T.
     CANDELA_HD double area_scale(const Vec3d& n) const {
         return abs_det_ / length(quadric_->to_object.apply_normal(n));
-    }
-    CANDELA_HD float area_pdf(const Vec3f& n) const {
-        return static_cast<float>(inv_object_area_ / area_scale(Vec3d(n)));
     }
 
     const Quadric* quadric_ = nullptr;
