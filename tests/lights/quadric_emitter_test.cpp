@@ -41,8 +41,11 @@ TEST(QuadricEmitter, SamplesLieOnTheClippedSurfaceAndPdfAgreesBitForBit) {
             }
             const Vec3f n(quadric_normal(q, p));
             EXPECT_NEAR(dot(n, s->n), 1.0f, 1e-5f);
-            if (q.kind == QuadricKind::kSphere) EXPECT_NEAR(length(p), q.radius, 1e-5);
-            if (q.kind == QuadricKind::kCylinder) EXPECT_NEAR(std::hypot(p.x, p.y), q.radius, 1e-5);
+            if (q.kind == QuadricKind::kSphere) {
+                EXPECT_NEAR(length(p), q.radius, 1e-5);
+            } else if (q.kind == QuadricKind::kCylinder) {
+                EXPECT_NEAR(std::hypot(p.x, p.y), q.radius, 1e-5);
+            }
             EXPECT_NEAR(dot(s->wi, normalize(s->p - ref)), 1.0f, 1e-6f);
         }
     }
