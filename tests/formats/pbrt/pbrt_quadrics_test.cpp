@@ -9,6 +9,7 @@
 
 #include "candela/formats/pbrt/pbrt_importer.h"
 #include "candela/formats/pbrt/pbrt_scene_loader.h"
+#include "candela/formats/scene_file.h"
 #include "candela/math/constants.h"
 #include "formats/pbrt/pbrt_import_text.h"
 
@@ -140,6 +141,16 @@ Shape "cylinder" "float radius" 0.5 "float zmin" 0 "float zmax" 2 "float phimax"
     EXPECT_NEAR(c["emission_scale"].get<double>(), 10.0 / (kPiD * area), 1e-9);
     const Scene scene = load_imported_scene(s, test::kInlineFile);
     EXPECT_FALSE(scene.shapes[0].emission.is_black());
+}
+
+TEST(PbrtQuadrics, TheFuzzingSeedLoadsWithoutWarnings) {
+    const Scene scene = load_scene_file(std::filesystem::path(CANDELA_TEST_DATA_DIR) / "pbrt" / "quadrics.pbrt");
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    ASSERT_EQ(scene.quadrics.size(), 4u);
+    EXPECT_EQ(scene.quadrics[1].kind, QuadricKind::kSphere);
+    EXPECT_EQ(scene.quadrics[2].kind, QuadricKind::kDisk);
+    EXPECT_TRUE(scene.quadrics[3].reverse_orientation);
+    EXPECT_FALSE(scene.shapes[3].emission.is_black());
 }
 
 }  // namespace
