@@ -72,7 +72,8 @@ class Accelerator {
     // The surface parameterisation (u, v) at a hit this accelerator returned: the mesh's vertex
     // uvs interpolated (a quad's (s, t)), or the barycentrics (b1, b2) for meshes without uvs; on
     // spheres pbrt's, u = phi / 2pi, v = 1 - theta / pi about +y (shading_geometry.h); on disks
-    // pbrt's, u = phi / 2pi, v = 1 - r / radius (disk.h); on curves pbrt's, u along the segment
+    // pbrt's, u = phi / 2pi, v = 1 - r / radius (disk.h); on cylinders, partial spheres and partial
+    // disks pbrt-v4's (quadric_intersection.h); on curves pbrt's, u along the segment
     // and v across it (curves.h).
     Vec2f uv(const SurfaceHit& hit) const;
     // The uv and the derivatives of point and shading normal at a hit (shading_geometry.h):

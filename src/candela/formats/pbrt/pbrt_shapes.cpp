@@ -182,6 +182,7 @@ std::optional<Json> clipped_quadric(const std::string& type, const Params& p, co
     Json shape;
     if (type == "disk") {
         const double h = p.float_or("height", 0.0), r = p.float_or("radius", 1.0);
+        if (!(r > 0)) p.fail(p.find("radius"), "disk: radius must be > 0");
         const double inner = std::fabs(p.float_or("innerradius", 0.0));
         if (!(inner < r) || !(phi_max > 0)) {
             ctx.warn(p.location(), "disk: innerradius >= radius or phimax 0 leaves no surface; skipped, as pbrt-v4 "
