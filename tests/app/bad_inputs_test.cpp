@@ -100,7 +100,9 @@ const BadInput kBadInputs[] = {
      "duplicate key \"film\""},
     {"deep_nesting_unclosed.json", kDeepNesting, kError, "", 1, 100001, "",
      "JSON syntax error while parsing value - unexpected end of input"},
-    // --- wrong types and shapes of values (24)
+    // --- wrong types and shapes of values (25)
+    {"cylinder_cut_out.json", kStructure, kError, "", 3, 85, "/shapes/0/material",
+     "a cylinder cannot be cut out: material \"leaf\" has alpha < 1"},
     {"boolean_for_number.json", kStructure, kError, "", 2, 21, "/camera/fov",
      "expected a number in (0, 180), got true"},
     {"coated_conductor_reflectance_and_eta.json", kStructure, kError, "", 3, 61, "/materials/copper/conductor_eta",
@@ -167,7 +169,7 @@ const BadInput kBadInputs[] = {
     {"near_miss_top_level_key.json", kUnknownName, kError, "", 2, 3, "",
      "unknown key \"materails\" (did you mean \"materials\"?)"},
     {"sphere_with_transform.json", kUnknownName, kError, "", 5, 6, "/shapes/0",
-     "unknown key \"transform\"; expected one of: center, emission, emission_scale, exterior, interior, material, radius, reverse_orientation, two_sided, type"},
+     "unknown key \"transform\"; expected one of: center, emission, emission_scale, exterior, interior, material, phi_max, radius, reverse_orientation, two_sided, type, z_max, z_min"},
     {"string_with_braces_before_error.json", kUnknownName, kError, "", 4, 51, "/materials/}{",
      "unknown key \"ior\"; expected one of: albedo, alpha, bump_map, normal_map, normal_map_convention, type"},
     {"transform_unknown_step.json", kUnknownName, kError, "", 5, 42, "/shapes/0/transform/0",
@@ -193,14 +195,14 @@ const BadInput kBadInputs[] = {
     {"unknown_metal.json", kUnknownName, kError, "", 3, 44, "/materials/gold/metal",
      "unknown metal \"Gold\"; expected one of: Ag, Al, Au, Cr, Cu, CuZn, Fe, Ti"},
     {"unknown_shape_type.json", kUnknownName, kError, "", 4, 14, "/shapes/0/type",
-     "unknown shape type \"shpere\"; expected one of: curves, disk, instance, mesh, quad, sphere"},
+     "unknown shape type \"shpere\"; expected one of: curves, cylinder, disk, instance, mesh, quad, sphere"},
     {"unknown_top_level_key.json", kUnknownName, kError, "", 2, 3, "",
      "unknown key \"renderer\"; expected one of: camera, film, integrator, lights, materials, media, objects, sampler, shapes, textures"},
     {"instance_unknown_object.json", kUnknownName, kError, "", 5, 36, "/shapes/0/object",
      "unknown object \"tre\" (did you mean \"tree\"?)"},
     {"unknown_texture.json", kUnknownName, kError, "", 3, 64, "/materials/m/albedo/texture",
      "unknown texture \"wod\"; defined textures: wood"},
-    // --- numbers: negative, zero, NaN/Inf, beyond range (39)
+    // --- numbers: negative, zero, NaN/Inf, beyond range (41)
     {"adaptive_threshold_negative.json", kNumber, kError, "", 2, 53, "/sampler/adaptive/threshold",
      "expected a number in (0, 1), got -0.01"},
     {"albedo_out_of_range.json", kNumber, kError, "", 3, 48, "/materials/red/albedo/1",
@@ -221,6 +223,10 @@ const BadInput kBadInputs[] = {
      "\"position\" and \"transform\" both place the camera; give one of them"},
     {"disk_negative_radius.json", kNumber, kError, "", 3, 85, "/shapes/0/radius",
      "expected a number > 0, got -1"},
+    {"sphere_phi_max_zero.json", kNumber, kError, "", 3, 78, "/shapes/0/phi_max",
+     "expected a number in (0, 360], got 0"},
+    {"disk_inner_radius_too_large.json", kNumber, kError, "", 3, 102, "/shapes/0/inner_radius",
+     "expected inner_radius < radius (1), got 1"},
     {"environment_scale_negative.json", kNumber, kError, "", 2, 59, "/lights/0/scale",
      "expected a number >= 0, got -1"},
     {"exposure_out_of_range.json", kNumber, kError, "", 2, 47, "/film/exposure",
@@ -331,11 +337,15 @@ const BadInput kBadInputs[] = {
      "the quad has no area in float precision (its edges are too short)"},
     {"zero_emission.json", kLight, kWarning, "", 5, 27, "/shapes/1/emission",
      "emission 0: the shape is not a light"},
-    // --- degenerate geometry (5)
+    // --- degenerate geometry (7)
     {"degenerate_quad.json", kDegenerate, kError, "", 4, 72, "/shapes/0/edge2",
      "edge2 [-2, 0, 0] is parallel to edge1 [1, 0, 0]; the quad has no area"},
     {"disk_zero_normal.json", kDegenerate, kError, "", 3, 63, "/shapes/0/normal",
      "expected a nonzero normal, got [0, 0, 0]"},
+    {"cylinder_z_range_reversed.json", kDegenerate, kError, "", 3, 69, "/shapes/0/z_max",
+     "expected z_min < z_max, got z_min 1 and z_max -1"},
+    {"sphere_z_range_misses.json", kDegenerate, kError, "", 3, 76, "/shapes/0/z_min",
+     "the z range [1.5, 2] misses the sphere of radius 1"},
     {"degenerate_triangles.json", kDegenerate, kWarning, "", 3, 39, "/shapes/0/file",
      "mesh file \"degenerate_triangles.obj\": skipped 2 of 4 triangles that have zero area (degenerate; the first is triangle 2)"},
     {"emitter_all_degenerate.json", kDegenerate, kError, "", 3, 39, "/shapes/0/file",
@@ -452,7 +462,7 @@ const BadInput kBadInputs[] = {
      "image has zero size (2x0)"},
     {"texture_corrupt.json", kImage, kError, "texture_corrupt.png", 0, 0, "",
      "not a PNG, JPEG, TGA or BMP image, or a corrupt one"},
-    // --- pbrt-v4 scenes, through the importer (17): the parser's syntax errors and pbrt-v4's
+    // --- pbrt-v4 scenes, through the importer (18): the parser's syntax errors and pbrt-v4's
     // semantics (blocks, names, indices), located at the directive or value at fault
     {"pbrt_binary_scene.pbrt", kPbrt, kError, "", 0, 0, "",
      "is a binary file, not pbrt-v4 scene text (ill-formed UTF-8 (0x89 at byte 1))"},
@@ -492,6 +502,8 @@ const BadInput kBadInputs[] = {
      "unknown sensor \"nikon_d800\"; expected one of: canon_eos_100d, "},
     {"pbrt_unsupported_shape.pbrt", kPbrt, kWarning, "", 8, 1, "",
      "Shape \"hyperboloid\" is not supported; skipped"},
+    {"pbrt_cylinder_empty_z_range.pbrt", kPbrt, kWarning, "", 8, 1, "",
+     "cylinder: an empty z range or phimax 0 leaves no surface; skipped, as pbrt-v4 renders nothing"},
     {"pbrt_unterminated_string.pbrt", kPbrt, kError, "", 8, 7, "",
      "unterminated string (a line break inside it)"},
     {"pbrt_wrong_parameter_type.pbrt", kPbrt, kError, "", 7, 31, "",

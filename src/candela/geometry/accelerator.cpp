@@ -14,6 +14,7 @@
 #include "candela/core/error.h"
 #include "candela/geometry/curve_hit.h"
 #include "candela/geometry/disk_intersection.h"
+#include "candela/geometry/quadric_intersection.h"
 #include "candela/geometry/ray_offset.h"
 #include "candela/geometry/sphere_intersection.h"
 #include "candela/math/constants.h"
@@ -121,6 +122,58 @@ void disk_occluded(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* r = reinterpret_cast<RTCRay*>(args->ray);
     if (intersect_embree_ray(*static_cast<const Disk*>(args->geometryUserPtr), *r)) r->tfar = -kInfinity;
+}
+
+// The same for the clipped quadrics (quadric.h); the user pointer is the Quadric.
+void write_quadric_bounds(const Quadric& q, RTCBounds* b) {
+    Vec3d lo, hi;
+    quadric_world_bounds(q, lo, hi);
+    auto down = [](double v) { return std::nextafter(float(v), -kInfinity); };
+    auto up = [](double v) { return std::nextafter(float(v), kInfinity); };
+    b->lower_x = down(lo.x);
+    b->lower_y = down(lo.y);
+    b->lower_z = down(lo.z);
+    b->upper_x = up(hi.x);
+    b->upper_y = up(hi.y);
+    b->upper_z = up(hi.z);
+}
+
+void quadric_bounds(const RTCBoundsFunctionArguments* args) {
+    write_quadric_bounds(*static_cast<const Quadric*>(args->geometryUserPtr), args->bounds_o);
+}
+
+std::optional<QuadricHit> intersect_embree_ray(const Quadric& q, const RTCRay& r) {
+    return intersect_quadric(q, Vec3d(Vec3f(r.org_x, r.org_y, r.org_z)), Vec3d(Vec3f(r.dir_x, r.dir_y, r.dir_z)),
+                             double(r.tnear), double(r.tfar));
+}
+
+void quadric_intersect(const RTCIntersectFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
+    std::optional<QuadricHit> hit = intersect_embree_ray(*static_cast<const Quadric*>(args->geometryUserPtr), rh->ray);
+    if (hit) write_user_hit(args, rh, hit->t);
+}
+
+void quadric_occluded(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* r = reinterpret_cast<RTCRay*>(args->ray);
+    if (intersect_embree_ray(*static_cast<const Quadric*>(args->geometryUserPtr), *r)) r->tfar = -kInfinity;
+}
+
+// The object-space point of a hit on a quadric at ray parameter t of the (world or instance
+// object space) ray: the ray's point taken into the quadric's space and moved onto the surface as
+// intersect_quadric moves it (reprojected, or onto the disk's plane).
+Vec3d quadric_surface_point(const Quadric& q, const Vec3d& p_world) {
+    Vec3d p = q.to_object.apply_point(p_world);
+    switch (q.kind) {
+        case QuadricKind::kSphere: return p * (q.radius / length(p));
+        case QuadricKind::kCylinder: {
+            const double s = q.radius / std::sqrt(p.x * p.x + p.y * p.y);
+            return Vec3d(p.x * s, p.y * s, p.z);
+        }
+        case QuadricKind::kDisk: return Vec3d(p.x, p.y, q.height);
+    }
+    return p;
 }
 
 // The uv of a point at barycentrics b of triangle `tri`: Accelerator::uv's rule, which the alpha
@@ -295,13 +348,14 @@ struct Accelerator::Impl {
     // set): one load from a hit to its data. The shapes of objects have entries too, found
     // through their instances; all instances share one more entry, with none set.
     struct Geometry {
-        enum class Kind : uint8_t { kMesh, kSphere, kDisk, kCurves, kInstances };
+        enum class Kind : uint8_t { kMesh, kSphere, kDisk, kCurves, kInstances, kQuadric };
         const TriangleMesh* mesh = nullptr;  // set for meshes only: the hot path's one test
         const void* user = nullptr;          // the Sphere, Disk or CurveSet of the other kinds
         Kind kind = Kind::kInstances;
         const Sphere* sphere() const { return kind == Kind::kSphere ? static_cast<const Sphere*>(user) : nullptr; }
         const Disk* disk() const { return kind == Kind::kDisk ? static_cast<const Disk*>(user) : nullptr; }
         const CurveSet* curves() const { return kind == Kind::kCurves ? static_cast<const CurveSet*>(user) : nullptr; }
+        const Quadric* quadric() const { return kind == Kind::kQuadric ? static_cast<const Quadric*>(user) : nullptr; }
         // A small mesh's winding normals, one per triangle (kMaxTrianglesWithNormalTable); empty
         // for larger meshes, whose hits normalize the cross product themselves.
         std::vector<Vec3f> face_normals;
@@ -349,6 +403,8 @@ struct Accelerator::Impl {
             attach_sphere(*g.sphere(), target, embree_id, cutout);
         else if (g.disk())
             attach_disk(*g.disk(), target, embree_id, cutout);
+        else if (g.quadric())
+            attach_quadric(*g.quadric(), target, embree_id);
         else
             attach_curves(*g.curves(), target, embree_id);
     }
@@ -415,6 +471,17 @@ struct Accelerator::Impl {
             rtcSetGeometryIntersectFunction(g, disk_intersect);
             rtcSetGeometryOccludedFunction(g, disk_occluded);
         }
+        commit_and_attach(g, target, id);
+    }
+
+    // The loaders refuse alpha on quadrics, so they have no cut-out form.
+    void attach_quadric(const Quadric& quadric, RTCScene target, unsigned id) {
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(g, 1);
+        rtcSetGeometryUserData(g, const_cast<Quadric*>(&quadric));
+        rtcSetGeometryBoundsFunction(g, quadric_bounds, nullptr);
+        rtcSetGeometryIntersectFunction(g, quadric_intersect);
+        rtcSetGeometryOccludedFunction(g, quadric_occluded);
         commit_and_attach(g, target, id);
     }
 
@@ -515,6 +582,21 @@ struct Accelerator::Impl {
         h.b = Vec2f(0.0f, 0.0f);
     }
 
+    // A hit on a clipped quadric: the point moved onto the surface in its object space, in
+    // double, then to the world; rounding to float dominates the error, as for spheres.
+    static void make_quadric_hit(const RTCRayHit& rh, const Ray& ray, const Quadric& q, SurfaceHit& h) {
+        h.t = rh.ray.tfar;
+        h.shape_id = rh.hit.geomID;
+        h.prim_id = 0;
+        const Vec3d p = quadric_surface_point(q, Vec3d(ray.o) + Vec3d(ray.d) * double(h.t));
+        h.p = Vec3f(q.to_world.apply_point(p));
+        h.p_error = Vec3f(max_component(abs(h.p)) * rounding_gamma(5));
+        const Vec3f ng(quadric_normal(q, p));
+        h.ng = ng;
+        h.ns = ng;
+        h.b = Vec2f(0.0f, 0.0f);
+    }
+
     // A hit on a curve (curve_hit.h): pbrt-v4's point, normal and (u, v).
     static void make_curve_hit(const RTCRayHit& rh, const Ray& ray, const CurveSet& c, SurfaceHit& h) {
         h.t = rh.ray.tfar;
@@ -534,6 +616,7 @@ struct Accelerator::Impl {
             case Geometry::Kind::kSphere: make_sphere_hit(rh, ray, *g.sphere(), h); break;
             case Geometry::Kind::kDisk: make_disk_hit(rh, ray, *g.disk(), h); break;
             case Geometry::Kind::kCurves: make_curve_hit(rh, ray, *g.curves(), h); break;
+            case Geometry::Kind::kQuadric: make_quadric_hit(rh, ray, *g.quadric(), h); break;
             default: make_instance_hit(rh, ray, h);
         }
     }
@@ -556,6 +639,8 @@ struct Accelerator::Impl {
                 make_sphere_hit(rh, local, *shape.sphere(), h);
             else if (shape.disk())
                 make_disk_hit(rh, local, *shape.disk(), h);
+            else if (shape.quadric())
+                make_quadric_hit(rh, local, *shape.quadric(), h);
             else
                 make_curve_hit(rh, local, *shape.curves(), h);
         }
@@ -572,7 +657,8 @@ struct Accelerator::Impl {
 
 Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
                          std::span<const Disk> disks, std::span<const Shape> shapes, AlphaCutouts cutouts,
-                         Instancing instancing, std::span<const CurveSet> curves)
+                         Instancing instancing, std::span<const CurveSet> curves,
+                         std::span<const Quadric> quadrics)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.geometries.resize(shapes.size() + (instancing.instances.empty() ? 0 : 1));
@@ -590,6 +676,7 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
         CANDELA_CHECK(index < (shapes[id].kind == ShapeKind::kMesh     ? meshes.size()
                                : shapes[id].kind == ShapeKind::kSphere ? spheres.size()
                                : shapes[id].kind == ShapeKind::kDisk   ? disks.size()
+                               : shapes[id].kind == ShapeKind::kQuadric ? quadrics.size()
                                                                        : curves.size()));
         switch (shapes[id].kind) {
             case ShapeKind::kMesh: {
@@ -606,6 +693,10 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
             case ShapeKind::kDisk:
                 m.geometries[id].user = &disks[index];
                 m.geometries[id].kind = Impl::Geometry::Kind::kDisk;
+                break;
+            case ShapeKind::kQuadric:
+                m.geometries[id].user = &quadrics[index];
+                m.geometries[id].kind = Impl::Geometry::Kind::kQuadric;
                 break;
             case ShapeKind::kCurves: {
                 m.geometries[id].user = &curves[index];
@@ -633,7 +724,7 @@ Accelerator::Accelerator(std::span<const TriangleMesh> meshes, std::span<const S
         const FloatParam& alpha = cutouts.shape_alpha[id];
         CANDELA_CHECK(!alpha.is_textured() || cutouts.textures);
         // The loaders refuse alpha on curves (Embree's curves would need a filter of their own).
-        CANDELA_CHECK(g.kind != Impl::Geometry::Kind::kCurves);
+        CANDELA_CHECK(g.kind != Impl::Geometry::Kind::kCurves && g.kind != Impl::Geometry::Kind::kQuadric);
         return &m.cutouts.emplace_back(CutoutShape{g.mesh, g.sphere(), g.disk(), alpha, cutouts.textures, id});
     };
     // Each object once, its shapes numbered from 0 in its own scene (compact ids: Embree sizes a
@@ -698,6 +789,11 @@ Vec2f Accelerator::uv(const SurfaceHit& hit) const {
     if (const Sphere* s = g.sphere()) return sphere_uv((impl_->shape_point(hit) - s->center) / s->radius);
     if (const Disk* d = g.disk()) return disk_uv(*d, impl_->shape_point(hit));
     if (g.curves()) return hit.b;
+    if (const Quadric* q = g.quadric()) {
+        // The hit's point back in the quadric's space (hit.p is on its surface, to float precision).
+        const Vec3d p = quadric_surface_point(*q, impl_->shape_point(hit));
+        return quadric_uv(*q, p, quadric_phi(p));
+    }
     return mesh_uv(*g.mesh, hit.prim_id, hit.b);
 }
 
@@ -713,6 +809,12 @@ ShadingGeometry Accelerator::shading(const SurfaceHit& hit) const {
     if (const Disk* disk = g.disk()) {
         const ShadingGeometry s = disk_shading_geometry(*disk, impl_->shape_point(hit));
         return instance ? shading_to_world(*instance, s, Vec3f(disk->normal)) : s;
+    }
+    if (const Quadric* q = g.quadric()) {
+        const Vec3d p = quadric_surface_point(*q, impl_->shape_point(hit));
+        const Vec3f n(quadric_normal(*q, p));
+        const ShadingGeometry s = quadric_shading_geometry(*q, p, n);
+        return instance ? shading_to_world(*instance, s, n) : s;
     }
     if (const CurveSet* curves = g.curves()) {
         // dpdu from the segment (moved to the world with its instance), dpdv across it, so that

@@ -1,7 +1,7 @@
 #pragma once
 // Ray traversal: one Embree 3 scene over all shapes. Triangle meshes are native Embree triangles;
 // spheres and disks are user geometry with candela's precise intersection (sphere_intersection.h,
-// disk_intersection.h); curves are Embree's Bezier curves (curves.h, curve_hit.h). Shape i
+// disk_intersection.h), and so are the clipped quadrics (quadric_intersection.h); curves are Embree's Bezier curves (curves.h, curve_hit.h). Shape i
 // of the scene is Embree geometry i, so hits name the shape directly. Objects (instance.h) are
 // Embree scenes of their own, built once, and instance j is the top-level Embree instance geometry
 // shapes.size() + j; a hit through it names the object's shape and the instance. Embree stays out
@@ -15,6 +15,7 @@
 #include "candela/geometry/curves.h"
 #include "candela/geometry/disk.h"
 #include "candela/geometry/instance.h"
+#include "candela/geometry/quadric.h"
 #include "candela/geometry/shading_geometry.h"
 #include "candela/geometry/shape.h"
 #include "candela/geometry/sphere.h"
@@ -56,7 +57,8 @@ class Accelerator {
     // `instancing`'s objects are in object space and in the world only through its instances.
     Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
                 std::span<const Disk> disks, std::span<const Shape> shapes, AlphaCutouts cutouts = {},
-                Instancing instancing = {}, std::span<const CurveSet> curves = {});
+                Instancing instancing = {}, std::span<const CurveSet> curves = {},
+                std::span<const Quadric> quadrics = {});
     // A scene without disks.
     Accelerator(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
                 std::span<const Shape> shapes, AlphaCutouts cutouts = {})
@@ -70,7 +72,8 @@ class Accelerator {
     // The surface parameterisation (u, v) at a hit this accelerator returned: the mesh's vertex
     // uvs interpolated (a quad's (s, t)), or the barycentrics (b1, b2) for meshes without uvs; on
     // spheres pbrt's, u = phi / 2pi, v = 1 - theta / pi about +y (shading_geometry.h); on disks
-    // pbrt's, u = phi / 2pi, v = 1 - r / radius (disk.h); on curves pbrt's, u along the segment
+    // pbrt's, u = phi / 2pi, v = 1 - r / radius (disk.h); on cylinders, partial spheres and partial
+    // disks pbrt-v4's (quadric_intersection.h); on curves pbrt's, u along the segment
     // and v across it (curves.h).
     Vec2f uv(const SurfaceHit& hit) const;
     // The uv and the derivatives of point and shading normal at a hit (shading_geometry.h):

@@ -7,11 +7,11 @@
 
 namespace candela {
 
-enum class ShapeKind { kMesh, kSphere, kDisk, kCurves };  // a quad is a mesh
+enum class ShapeKind { kMesh, kSphere, kDisk, kCurves, kQuadric };  // a quad is a mesh; kQuadric: quadric.h
 
 struct Shape {
     ShapeKind kind = ShapeKind::kMesh;
-    uint32_t index = 0;     // into the scene's meshes, spheres, disks or curves
+    uint32_t index = 0;     // into the scene's meshes, spheres, disks, curves or quadrics
     uint32_t material = 0;  // into the scene's materials
     Rgb emission;           // black: not a light
     bool two_sided = false; // emission leaves both sides

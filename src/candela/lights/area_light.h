@@ -7,6 +7,7 @@
 #include "candela/core/variant.h"
 #include "candela/lights/disk_emitter.h"
 #include "candela/lights/mesh_emitter.h"
+#include "candela/lights/quadric_emitter.h"
 #include "candela/lights/sphere_emitter.h"
 #include "candela/math/constants.h"
 #include "candela/math/color.h"
@@ -14,7 +15,7 @@
 
 namespace candela {
 
-using Emitter = Variant<MeshEmitter, SphereEmitter, DiskEmitter>;
+using Emitter = Variant<MeshEmitter, SphereEmitter, DiskEmitter, QuadricEmitter>;
 
 // visit(f, emitter) with meshes (and quads), the common emitters, tested first: one comparison
 // of the index, where visit compares it with each other alternative (and the valueless state)
@@ -22,10 +23,11 @@ using Emitter = Variant<MeshEmitter, SphereEmitter, DiskEmitter>;
 // compiler keeps inlining the mesh's sampling into the light set's (measured: a call otherwise).
 template <class F>
 CANDELA_HD decltype(auto) visit_emitter(const Emitter& emitter, F&& f) {
-    static_assert(std::variant_size_v<Emitter> == 3, "visit_emitter must call every emitter type");
+    static_assert(std::variant_size_v<Emitter> == 4, "visit_emitter must call every emitter type");
     if (const MeshEmitter* mesh = get_if<MeshEmitter>(&emitter)) return f(*mesh);
     if (const SphereEmitter* sphere = get_if<SphereEmitter>(&emitter)) return f(*sphere);
-    return f(*get_if<DiskEmitter>(&emitter));
+    if (const DiskEmitter* disk = get_if<DiskEmitter>(&emitter)) return f(*disk);
+    return f(*get_if<QuadricEmitter>(&emitter));
 }
 
 struct AreaLight {

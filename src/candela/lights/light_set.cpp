@@ -11,17 +11,19 @@ namespace {
 
 // The emitter of a shape's geometry.
 Emitter make_emitter(const Shape& shape, std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres,
-                     std::span<const Disk> disks) {
+                     std::span<const Disk> disks, std::span<const Quadric> quadrics) {
     // A disk shape given to the constructor without disks would read past the span. Curves do
     // not emit (the loaders refuse it, as pbrt-v4 cannot sample them).
     CANDELA_CHECK(shape.kind != ShapeKind::kCurves);
     CANDELA_CHECK(shape.index < (shape.kind == ShapeKind::kMesh     ? meshes.size()
                                  : shape.kind == ShapeKind::kSphere ? spheres.size()
+                                 : shape.kind == ShapeKind::kQuadric ? quadrics.size()
                                                                     : disks.size()));
     switch (shape.kind) {
         case ShapeKind::kMesh: return MeshEmitter(meshes[shape.index]);
         case ShapeKind::kSphere: return SphereEmitter{spheres[shape.index]};
         case ShapeKind::kDisk: return DiskEmitter(disks[shape.index]);
+        case ShapeKind::kQuadric: return QuadricEmitter(quadrics[shape.index]);
         case ShapeKind::kCurves: break;
     }
     return SphereEmitter{};
@@ -31,7 +33,8 @@ Emitter make_emitter(const Shape& shape, std::span<const TriangleMesh> meshes, s
 
 LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres, std::span<const Disk> disks,
                    std::span<const Shape> shapes, std::span<const DeltaLight> delta_lights, LightSelection selection,
-                   std::optional<EnvironmentLight> environment, float scene_radius)
+                   std::optional<EnvironmentLight> environment, float scene_radius,
+                   std::span<const Quadric> quadrics)
     : light_of_shape_(shapes.size(), kNoLight), environment_(std::move(environment)) {
     std::vector<float> weights;
     // kBvh: each light's bounds (or none: infinite), by selection index. The weights above stay
@@ -42,7 +45,7 @@ LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere>
     for (size_t id = 0; id < shapes.size(); ++id) {
         const Shape& shape = shapes[id];
         if (shape.emission.is_black()) continue;
-        AreaLight light{make_emitter(shape, meshes, spheres, disks), from_rgb(shape.emission), shape.two_sided,
+        AreaLight light{make_emitter(shape, meshes, spheres, disks, quadrics), from_rgb(shape.emission), shape.two_sided,
                         static_cast<uint32_t>(id)};
         float area = visit([](const auto& e) { return e.area(); }, light.emitter);
         if (!(area > 0.0f) || !std::isfinite(area)) continue;

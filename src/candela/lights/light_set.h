@@ -26,6 +26,7 @@
 
 #include "candela/core/platform.h"
 #include "candela/geometry/disk.h"
+#include "candela/geometry/quadric.h"
 #include "candela/geometry/shape.h"
 #include "candela/geometry/sphere.h"
 #include "candela/geometry/triangle_mesh.h"
@@ -49,7 +50,8 @@ class LightSet {
     // DeltaLightType::power); delta lights of zero power are left out.
     LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres, std::span<const Disk> disks,
              std::span<const Shape> shapes, std::span<const DeltaLight> delta_lights, LightSelection selection,
-             std::optional<EnvironmentLight> environment, float scene_radius);
+             std::optional<EnvironmentLight> environment, float scene_radius,
+             std::span<const Quadric> quadrics = {});
     // Area lights of meshes and spheres, and the environment.
     LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere> spheres, std::span<const Shape> shapes,
              LightSelection selection = LightSelection::kPower,

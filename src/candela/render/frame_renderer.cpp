@@ -161,7 +161,7 @@ struct FrameRenderer::Parts {
 
     Parts(const Scene& scene, PixelBounds bounds)
         : accel(scene.meshes, scene.spheres, scene.disks, scene.shapes, alpha_cutouts(scene),
-                Instancing{scene.objects, scene.instances}, scene.curves),
+                Instancing{scene.objects, scene.instances}, scene.curves, scene.quadrics),
           lights(build_light_set(scene, accel)),
           camera(make_camera(scene.camera)),
           integrator(make_integrator(scene, accel, lights)),

@@ -50,7 +50,7 @@ LightSet build_light_set(const Scene& scene, const Accelerator& accel) {
             delta_spectra.push_back(SpectralColor{rgb_illuminant_spectrum(to_rgb(delta_light_color(light))), nullptr, 1.0f});
     }
     LightSet lights(scene.meshes, scene.spheres, scene.disks, scene.shapes, delta_lights,
-                    scene.integrator.light_selection, std::move(environment), scene_radius);
+                    scene.integrator.light_selection, std::move(environment), scene_radius, scene.quadrics);
     if (scene.integrator.spectral) {
         std::vector<SpectralColor> shape_spectra(scene.shapes.size());
         for (size_t i = 0; i < scene.shapes.size(); ++i) {

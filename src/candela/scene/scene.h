@@ -12,6 +12,7 @@
 #include "candela/film/film_settings.h"
 #include "candela/geometry/curves.h"
 #include "candela/geometry/disk.h"
+#include "candela/geometry/quadric.h"
 #include "candela/geometry/instance.h"
 #include "candela/geometry/shape.h"
 #include "candela/geometry/sphere.h"
@@ -86,6 +87,7 @@ struct Scene {
     std::vector<TriangleMesh> meshes;
     std::vector<Sphere> spheres;
     std::vector<Disk> disks;
+    std::vector<Quadric> quadrics;  // cylinders, partial spheres and partial disks (quadric.h)
     std::vector<CurveSet> curves;
     std::vector<Shape> shapes;  // in the world, except those of objects
     // Instancing (geometry/instance.h): each object a run of `shapes` in object space, without

@@ -50,6 +50,13 @@ void ObjectBounds::add(const Disk& disk) {
     add(disk.center + half);
 }
 
+void ObjectBounds::add(const Quadric& quadric) {
+    Vec3d a, b;
+    quadric_world_bounds(quadric, a, b);
+    add(a);
+    add(b);
+}
+
 std::vector<ObjectBounds> read_objects(JsonCursor objects, const std::filesystem::path& folder, Scene& scene,
                                        MemoryBudget& budget, const MeshStore* meshes, const CurveStore* curves) {
     std::vector<ObjectBounds> bounds;

@@ -105,6 +105,7 @@ struct ObjectBounds {
     void add(const TriangleMesh& mesh);
     void add(const Sphere& sphere);
     void add(const Disk& disk);
+    void add(const Quadric& quadric);
 };
 
 // Where a list of shapes is read: the scene's `shapes` (object empty), or an object's, whose shapes
@@ -121,6 +122,12 @@ struct ShapeSection {
 // `shapes`: meshes (loaded relative to the section's folder, each charged to `budget` before it
 // is built), quads, spheres, disks and instances of objects; needs the materials and objects.
 void read_shapes(const JsonCursor& shapes, const ShapeSection& section, Scene& scene, MemoryBudget& budget);
+
+// Whether shape `c` of `type` is a clipped quadric (scene_quadrics.cpp): a cylinder, or a sphere
+// or disk with partial parameters. Marks the keys it looks at as read.
+bool is_partial_quadric(JsonCursor& c, std::string_view type);
+// Such a shape's geometry (all keys but the common ones, which the caller has read).
+Quadric read_quadric(JsonCursor& c, std::string_view type, bool reverse_orientation);
 
 // A `curves` shape (scene_curves.cpp): `shape` has its material and media, `c` the rest.
 void read_curves(JsonCursor& c, const ShapeSection& section, Scene& scene, MemoryBudget& budget, Shape shape,

@@ -18,7 +18,8 @@ namespace candela {
 
 namespace {
 
-constexpr std::array<std::string_view, 6> kShapeTypes = {"mesh", "sphere", "quad", "disk", "curves", "instance"};
+constexpr std::array<std::string_view, 7> kShapeTypes = {"mesh",   "sphere", "quad",    "disk",
+                                                          "cylinder", "curves", "instance"};
 // |sin| of the angle between a quad's edges below which it has no usable area or normal.
 constexpr double kParallelSine = 1e-6;
 
@@ -84,6 +85,11 @@ Disk read_disk(JsonCursor& c, bool reverse_orientation) {
         blame.fail(transform ? "the transform leaves the disk with no area in float precision"
                              : "the disk has no area in float precision (its radius is too small)");
     return disk;
+}
+
+// What an error calls a clipped quadric.
+std::string_view partial_name(std::string_view type) {
+    return type == "cylinder" ? "cylinder" : type == "sphere" ? "partial sphere" : "partial disk";
 }
 
 // Triangles whose area is zero or not finite in float (repeated or collinear corners, or sizes
@@ -199,6 +205,20 @@ void read_shape(JsonCursor c, const ShapeSection& section, Scene& scene, MemoryB
     if (auto v = c.get("two_sided")) shape.two_sided = v->boolean();
     bool reverse_orientation = false;
     if (auto v = c.get("reverse_orientation")) reverse_orientation = v->boolean();
+
+    if (is_partial_quadric(c, type)) {
+        // An alpha test would need a cut-out form of the quadrics' intersection; none yet.
+        if (scene.materials[shape.material].surface.cuts_out())
+            c.require("material").fail(fmt::format("a {} cannot be cut out: material {} has alpha < 1",
+                                                   partial_name(type), json_quoted(scene.material_names[shape.material])));
+        const Quadric quadric = read_quadric(c, type, reverse_orientation);
+        shape.kind = ShapeKind::kQuadric;
+        shape.index = static_cast<uint32_t>(scene.quadrics.size());
+        scene.quadrics.push_back(quadric);
+        scene.shapes.push_back(shape);
+        if (section.bounds) section.bounds->add(quadric);
+        return;
+    }
 
     if (type == "sphere") {
         // Spheres take no transform: Sphere stores the world-space centre and radius exactly.

@@ -4,7 +4,9 @@
 // ReverseOrientation or a mirroring transform, not both) is candela's too.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "candela/formats/mesh/mesh_loader.h"
 #include "candela/geometry/bilinear_patches.h"
@@ -168,6 +170,67 @@ Json sphere_instance(double r, const std::string& material, bool reversed, const
     return Json{{"type", "instance"}, {"object", name}, {"transform", transform_json(to_world * frame)}};
 }
 
+// pbrt-v4's clipped quadrics (cylinder, partial sphere, partial disk) as candela's (quadric.h), in
+// their object space placed by the CTM. The front side follows pbrt-v4's quadrics: the outside,
+// flipped by ReverseOrientation or by a mirroring transform (not both). Parameters as pbrt-v4
+// clamps them (shapes.h): z_min and z_max in either order, a sphere's clamped to [-r, r], phimax
+// to [0, 360]; a shape left with no area is skipped with a warning. `area` is pbrt-v4's Area(),
+// the object-space area, which its DiffuseAreaLight divides `power` by.
+std::optional<Json> clipped_quadric(const std::string& type, const Params& p, const GraphicsState& state,
+                                    const Transform& ctm, double& area, ImportContext& ctx) {
+    const double phi_max = std::clamp(p.float_or("phimax", 360.0), 0.0, 360.0);
+    Json shape;
+    if (type == "disk") {
+        const double h = p.float_or("height", 0.0), r = p.float_or("radius", 1.0);
+        if (!(r > 0)) p.fail(p.find("radius"), "disk: radius must be > 0");
+        const double inner = std::fabs(p.float_or("innerradius", 0.0));
+        if (!(inner < r) || !(phi_max > 0)) {
+            ctx.warn(p.location(), "disk: innerradius >= radius or phimax 0 leaves no surface; skipped, as pbrt-v4 "
+                                   "renders nothing");
+            return std::nullopt;
+        }
+        area = 0.5 * (phi_max * kPiD / 180) * (r * r - inner * inner);
+        shape = Json{{"type", "disk"},      {"center", Json::array({0.0, 0.0, h})}, {"normal", Json::array({0.0, 0.0, 1.0})},
+                     {"radius", r},         {"phi_max", phi_max}};
+        if (inner > 0) shape["inner_radius"] = inner;
+    } else {
+        const double r = p.float_or("radius", 1.0);
+        if (!(r > 0)) p.fail(p.find("radius"), type + ": radius must be > 0");
+        const double d = type == "sphere" ? r : 1.0;
+        const double z0 = p.float_or("zmin", -d), z1 = p.float_or("zmax", d);
+        double lo = std::min(z0, z1), hi = std::max(z0, z1);
+        if (type == "sphere") {
+            lo = std::clamp(lo, -r, r);
+            hi = std::clamp(hi, -r, r);
+        }
+        if (!(lo < hi) || !(phi_max > 0)) {
+            ctx.warn(p.location(), type + ": an empty z range or phimax 0 leaves no surface; skipped, as pbrt-v4 "
+                                          "renders nothing");
+            return std::nullopt;
+        }
+        area = (phi_max * kPiD / 180) * r * (hi - lo);
+        shape = Json{{"type", type}, {"radius", r}, {"z_min", lo}, {"z_max", hi}, {"phi_max", phi_max}};
+        if (type == "sphere") shape["center"] = Json::array({0.0, 0.0, 0.0});
+    }
+    if (!ctm.is_identity()) shape["transform"] = transform_json(ctm);
+    if (state.reverse_orientation != ctm.swaps_handedness()) shape["reverse_orientation"] = true;
+    if (p.has("alpha")) {
+        ctx.warn(p.find("alpha")->location, type + ": alpha on a cylinder, partial sphere or partial disk is not "
+                                                   "supported; ignored");
+    }
+    return shape;
+}
+
+// Whether a pbrt-v4 sphere or disk is clipped (else candela's own full sphere or disk takes it).
+bool is_clipped(const std::string& type, const Params& p) {
+    if (type == "cylinder") return true;
+    const double phi_max = p.float_or("phimax", 360);
+    if (type == "disk") return p.float_or("innerradius", 0.0) != 0 || phi_max < 360;
+    const double r = p.float_or("radius", 1.0);
+    const double z0 = p.float_or("zmin", -r), z1 = p.float_or("zmax", r);
+    return std::min(z0, z1) > -r || std::max(z0, z1) < r || phi_max < 360;
+}
+
 // The area light of the graphics state on `shape`; `area` is asked for only when `power` needs it.
 void add_emission(const GraphicsState& state, Json& shape, const std::function<double()>& area, ImportContext& ctx) {
     if (!state.area_light) return;
@@ -213,7 +276,7 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
     // A mesh takes a projective transform vertex by vertex, as pbrt-v4's triangles do; pbrt-v4's
     // quadrics intersect rays taken into their object space by it, which candela's cannot.
     Transform affine_ctm = state.ctm;
-    if (!state.ctm.is_affine() && (type == "sphere" || type == "disk")) {
+    if (!state.ctm.is_affine() && (type == "sphere" || type == "disk" || type == "cylinder")) {
         ctx.warn(p.location(), type + ": a projective transform (a last row other than 0 0 0 1) is not supported; "
                                       "its last row is taken as 0 0 0 1");
         Transform::Matrix m = state.ctm.matrix();
@@ -246,11 +309,24 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
         shape = Json{{"type", "mesh"}, {"file", file}};
         if (!ctm.is_identity()) shape["transform"] = transform_json(ctm);
         if (state.reverse_orientation) shape["reverse_orientation"] = true;
+    } else if ((type == "sphere" || type == "disk" || type == "cylinder") && is_clipped(type, p)) {
+        double quadric_area = 0;
+        std::optional<Json> quadric = clipped_quadric(type, p, state, ctm, quadric_area, ctx);
+        if (!quadric) {
+            p.mark_all_used();
+            return;
+        }
+        shape = std::move(*quadric);
+        area = [quadric_area] { return quadric_area; };
+        shape["material"] = state.material;
+        add_media(state, shape);
+        add_emission(state, shape, area, ctx);
+        if (!shapes_pointer.empty()) ctx.origin(fmt::format("{}/{}", shapes_pointer, shapes.size()), p.location());
+        shapes.push_back(std::move(shape));
+        return;
     } else if (type == "sphere") {
         const double r = p.float_or("radius", 1.0);
         if (!(r > 0)) p.fail(p.find("radius"), "sphere: radius must be > 0");
-        if (p.float_or("zmin", -r) > -r || p.float_or("zmax", r) < r || p.float_or("phimax", 360) < 360)
-            ctx.warn(p.location(), "sphere: partial spheres (zmin, zmax, phimax) are rendered whole");
         double s = 1;
         const bool similarity = is_similarity(ctm, s);
         const Vec3d c = ctm.apply_point(Vec3d(0, 0, 0));
@@ -280,8 +356,6 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
     } else if (type == "disk") {
         const double h = p.float_or("height", 0.0), r = p.float_or("radius", 1.0);
         if (!(r > 0)) p.fail(p.find("radius"), "disk: radius must be > 0");
-        if (p.float_or("innerradius", 0.0) > 0 || p.float_or("phimax", 360) < 360)
-            ctx.warn(p.location(), "disk: innerradius and phimax are not supported; rendered as a full disk");
         shape = Json{{"type", "disk"},
                      {"center", Json::array({0.0, 0.0, h})},
                      {"normal", Json::array({0.0, 0.0, 1.0})},
