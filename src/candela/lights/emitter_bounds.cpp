@@ -27,7 +27,8 @@ DirectionCone mesh_normal_cone(const TriangleMesh& m) {
 }  // namespace
 
 LightBounds area_light_bounds(const Shape& shape, std::span<const TriangleMesh> meshes,
-                              std::span<const Sphere> spheres, std::span<const Disk> disks, float area) {
+                              std::span<const Sphere> spheres, std::span<const Disk> disks,
+                              std::span<const Quadric> quadrics, float area) {
     LightBounds b;
     b.phi = shape.emission.max_component() * area * kPi;
     b.cos_theta_e = std::cos(kPi / 2.0f);
@@ -56,6 +57,17 @@ LightBounds area_light_bounds(const Shape& shape, std::span<const TriangleMesh> 
                 for (float sv : {-1.0f, 1.0f}) b.bounds.extend(c + u * su + v * sv);
             b.w = normalize(to_float(d.normal));
             b.cos_theta_o = 1.0f;
+            break;
+        }
+        case ShapeKind::kQuadric: {
+            // Clipped spheres, cylinders and disks: their world box, and normals all around
+            // (pbrt-v4 gives its cylinders and partial spheres the entire sphere of directions;
+            // a disk's one normal would be tighter, and this bound is still a bound).
+            Vec3d lo, hi;
+            quadric_world_bounds(quadrics[shape.index], lo, hi);
+            b.bounds.extend(to_float(lo));
+            b.bounds.extend(to_float(hi));
+            b.cos_theta_o = -1.0f;
             break;
         }
         case ShapeKind::kCurves: break;  // curves never emit (LightSet refuses them)

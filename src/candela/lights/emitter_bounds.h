@@ -11,6 +11,7 @@
 #include <span>
 
 #include "candela/geometry/disk.h"
+#include "candela/geometry/quadric.h"
 #include "candela/geometry/shape.h"
 #include "candela/geometry/sphere.h"
 #include "candela/geometry/triangle_mesh.h"
@@ -21,7 +22,8 @@ namespace candela {
 
 // The bounds of shape `shape` emitting `shape.emission` (area: its emitting area).
 LightBounds area_light_bounds(const Shape& shape, std::span<const TriangleMesh> meshes,
-                              std::span<const Sphere> spheres, std::span<const Disk> disks, float area);
+                              std::span<const Sphere> spheres, std::span<const Disk> disks,
+                              std::span<const Quadric> quadrics, float area);
 
 // The bounds of a point or spot light; nullopt for a directional light.
 std::optional<LightBounds> delta_light_bounds(const DeltaLight& light);

@@ -50,7 +50,7 @@ LightSet::LightSet(std::span<const TriangleMesh> meshes, std::span<const Sphere>
         float area = visit([](const auto& e) { return e.area(); }, light.emitter);
         if (!(area > 0.0f) || !std::isfinite(area)) continue;
         light_of_shape_[id] = static_cast<uint32_t>(lights_.size());
-        if (bvh) bounded.emplace_back(uint32_t(weights.size()), area_light_bounds(shape, meshes, spheres, disks, area));
+        if (bvh) bounded.emplace_back(uint32_t(weights.size()), area_light_bounds(shape, meshes, spheres, disks, quadrics, area));
         weights.push_back(selection != LightSelection::kUniform ? area_light_power(light) : 1.0f);
         lights_.push_back(std::move(light));
     }
