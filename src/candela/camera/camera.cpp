@@ -2,10 +2,15 @@
 
 namespace candela {
 
-Camera make_camera(const CameraSettings& settings) {
+StaticCamera make_static_camera(const CameraSettings& settings) {
     if (settings.type == CameraType::kOrthographic) return OrthographicCamera(settings);
     if (settings.aperture_radius > 0.0f) return ThinLensCamera(settings);
     return PerspectiveCamera(settings);
+}
+
+Camera make_camera(const CameraSettings& settings) {
+    if (settings.motion) return MovingCamera(settings);
+    return visit([](const auto& camera) -> Camera { return camera; }, make_static_camera(settings));
 }
 
 }  // namespace candela

@@ -1,19 +1,16 @@
 #pragma once
-// The cameras, a closed set dispatched by visit (STYLE.md). The renderer visits once per tile,
-// not per sample, so each kind's sample loop is compiled for it and a pinhole scene runs the same
-// code as before there were others.
+// The cameras, a closed set dispatched by visit (STYLE.md): the still ones and the moving one.
 #include "candela/camera/camera_settings.h"
-#include "candela/camera/orthographic_camera.h"
-#include "candela/camera/perspective_camera.h"
-#include "candela/camera/thin_lens_camera.h"
+#include "candela/camera/moving_camera.h"
+#include "candela/camera/static_camera.h"
 #include "candela/core/variant.h"
 
 namespace candela {
 
-using Camera = Variant<PerspectiveCamera, ThinLensCamera, OrthographicCamera>;
+using Camera = Variant<PerspectiveCamera, ThinLensCamera, OrthographicCamera, MovingCamera>;
 
-// The camera the settings describe: perspective with aperture_radius > 0 is a ThinLensCamera,
-// without it a PerspectiveCamera (the pinhole).
+// The camera the settings describe: a MovingCamera when settings.motion is set, else the still
+// camera of make_static_camera.
 Camera make_camera(const CameraSettings& settings);
 
 }  // namespace candela

@@ -27,6 +27,15 @@ struct CameraBasis {
 // (which has no look_at to focus on).
 inline constexpr float kDefaultTransformFocusDistance = 1e6f;
 
+// A moving camera (pbrt-v4's animated CameraTransform): the frame above is the camera's at
+// start_time, `end` its frame at end_time; in between the two are interpolated as
+// AnimatedTransform does (math/animated_transform.h), before start_time and after end_time they
+// hold still. Both frames have the same handedness (the loader checks).
+struct CameraMotion {
+    CameraBasis end;
+    double start_time = 0.0, end_time = 1.0;
+};
+
 struct CameraSettings {
     CameraType type = CameraType::kPerspective;
     Vec3f position{0, 0, 0};
@@ -49,6 +58,11 @@ struct CameraSettings {
     // of tan(fov / 2) (fov_axis is then not used); orthographic: in scene units (ortho_height is
     // then not used). Unset: centred, from fov and fov_axis or ortho_height.
     std::optional<std::array<float, 4>> screen_window;
+    // The shutter [open, close] (pbrt-v4's shutteropen, shutterclose): each camera sample's time is
+    // drawn uniformly in it, but only when something moves (then one 1D request, after the pixel
+    // filter's and before the lens's, in pbrt-v4's order).
+    std::array<double, 2> shutter{0.0, 1.0};
+    std::optional<CameraMotion> motion;
 };
 
 }  // namespace candela

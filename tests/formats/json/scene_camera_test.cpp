@@ -3,6 +3,8 @@
 // Scene; bad values and keys of the other camera type are located errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <array>
 #include <string>
 
@@ -180,6 +182,30 @@ TEST(SceneLoaderCamera, BadScreenWindowsAreLocatedErrors) {
     EXPECT_NE(far.message().find("beyond float range"), std::string::npos) << far.message();
     EXPECT_EQ(load_error(R"({"camera": {"screen_window": [-1, 1]}})").message(),
               "expected an array of 4 numbers [xmin, xmax, ymin, ymax], got [-1, 1]");
+}
+
+TEST(SceneLoaderCamera, ShutterIsRead) {
+    const auto shutter = load_json(R"({"camera": {"shutter": [0.25, 2]}})").camera.shutter;
+    EXPECT_EQ(shutter[0], 0.25);
+    EXPECT_EQ(shutter[1], 2.0);
+    EXPECT_EQ(load_json(R"({"camera": {}})").camera.shutter[1], 1.0);  // pbrt-v4's default [0, 1]
+    EXPECT_EQ(load_error(R"({"camera": {"shutter": [1, 1]}})").where().json_pointer, "/camera/shutter/1");
+}
+
+TEST(SceneLoaderCamera, MotionIsTheEndFrameInTheStartFramesForm) {
+    const Scene s = load_json(
+        R"({"camera": {"position": [0, 0, 0], "look_at": [0, 0, -1], "motion": {"position": [1, 0, 0], "times": [0, 2]}}})");
+    ASSERT_TRUE(s.camera.motion.has_value());
+    EXPECT_EQ(s.camera.motion->end.position, Vec3f(1, 0, 0));
+    // look_at and up stay the start's: from (1, 0, 0) the camera still looks at (0, 0, -1).
+    EXPECT_NEAR(s.camera.motion->end.forward.x, -std::sqrt(0.5f), 1e-6f);
+    EXPECT_NEAR(s.camera.motion->end.forward.z, -std::sqrt(0.5f), 1e-6f);
+    EXPECT_EQ(s.camera.motion->end_time, 2.0);
+    EXPECT_FALSE(load_json(R"({"camera": {}})").camera.motion.has_value());
+    // A look_at camera's end frame is not a matrix: the two must have the same handedness.
+    const SceneError e = load_error(R"({"camera": {"motion": {"transform": [{"translate": [1, 0, 0]}]}}})");
+    EXPECT_EQ(e.where().json_pointer, "/camera/motion");
+    EXPECT_NE(e.message().find("takes those too"), std::string::npos);
 }
 
 }  // namespace

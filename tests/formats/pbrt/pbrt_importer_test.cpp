@@ -291,6 +291,31 @@ TEST(PbrtImporter, PbrtsLeftHandedCameraIsNotMirrored) {
     EXPECT_TRUE(m.document["camera"].contains("look_at"));
 }
 
+TEST(PbrtImporter, EndTimeTransformsMoveTheCamera) {
+    // ActiveTransform EndTime: the translation is in the end CTM only; the camera's motion holds
+    // the end frame (world from camera: its inverse), in the start frame's form, and the shutter.
+    const ImportedScene s = import(std::string("LookAt 0 0 0  0 0 -1  0 1 0\nActiveTransform EndTime\nTranslate 2 0 0\n"
+                                               "ActiveTransform All\nTransformTimes 0 2\n"
+                                               "Camera \"perspective\" \"float shutteropen\" 0.5\nWorldBegin\n") +
+                                   kLight);
+    const auto& camera = s.document["camera"];
+    ASSERT_TRUE(camera.contains("motion"));
+    EXPECT_TRUE(camera["motion"].contains("transform"));
+    // The end camera sits at world x = -2 (the world moved +2 in camera space).
+    EXPECT_DOUBLE_EQ(camera["motion"]["transform"][0]["matrix"][3].get<double>(), -2.0);
+    EXPECT_EQ(camera["motion"]["times"][1].get<double>(), 2.0);
+    EXPECT_EQ(camera["shutter"][0].get<double>(), 0.5);
+    // Without EndTime transforms the camera stands still and has no motion.
+    EXPECT_FALSE(import(std::string("Camera \"perspective\"\nWorldBegin\n") + kLight).document["camera"].contains("motion"));
+}
+
+TEST(PbrtImporter, MovingShapesAndLightsWarnAndUseTheStartTransform) {
+    const ImportedScene s = import(std::string("WorldBegin\nActiveTransform EndTime\nTranslate 1 0 0\n"
+                                               "ActiveTransform All\nLightSource \"point\"\nShape \"sphere\"\n"));
+    EXPECT_TRUE(has_warning(s.warnings, "animated lights are not supported"));
+    EXPECT_TRUE(has_warning(s.warnings, "moving shapes (motion blur) are not supported yet"));
+}
+
 TEST(PbrtImporter, HairIsImportedWithPbrtsPrecedenceOfAbsorptions) {
     const ImportedScene s = import(std::string("WorldBegin\n"
                                                "MakeNamedMaterial \"plain\" \"string type\" \"hair\"\n"

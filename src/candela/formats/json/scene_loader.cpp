@@ -213,6 +213,53 @@ CameraBasis read_camera_basis(const JsonCursor& v) {
     return basis;
 }
 
+// An interval [a, b] of times with b > a (the shutter: open, close; the motion's times: start,
+// end), named `first` and `second` in the error.
+std::array<double, 2> read_time_interval(const JsonCursor& v, std::string_view first, std::string_view second) {
+    auto e = v.elements(2, fmt::format("an array of 2 numbers [{}, {}]", first, second));
+    const std::array<double, 2> t{e[0].number(), e[1].number()};
+    if (!(t[1] > t[0])) e[1].fail(fmt::format("{} must be after {} ({}), got {}", second, first, t[0], t[1]));
+    return t;
+}
+
+// The camera's `motion`: its frame at the end of `times` (default [0, 1]), given as the camera's
+// own frame is (position / look_at / up, or transform), so that both have the same handedness.
+CameraMotion read_camera_motion(JsonCursor m, const CameraSettings& start) {
+    CameraMotion motion;
+    if (auto v = m.get("times")) {
+        const std::array<double, 2> t = read_time_interval(*v, "start", "end");
+        motion.start_time = t[0];
+        motion.end_time = t[1];
+    }
+    if (start.basis) {
+        for (std::string_view key : {"position", "look_at", "up"})
+            if (m.has(key))
+                m.document().fail_at_key(m.pointer(), key,
+                                         "the camera is placed by \"transform\"; its end frame takes \"transform\" too");
+        motion.end = read_camera_basis(m.require("transform"));
+    } else {
+        if (m.has("transform"))
+            m.document().fail_at_key(m.pointer(), "transform",
+                                     "the camera is placed by position / look_at / up; its end frame takes those too");
+        CameraSettings end = start;
+        auto position = m.get("position");
+        auto look_at = m.get("look_at");
+        auto up = m.get("up");
+        if (!position && !look_at && !up) m.fail("the end frame needs position, look_at or up (the others default to the start frame's)");
+        if (position) end.position = position->vec3f();
+        if (look_at) end.look_at = look_at->vec3f();
+        if (up) {
+            end.up = up->vec3f();
+            if (end.up == Vec3f(0.0f)) up->fail_expected("a nonzero up vector");
+        }
+        check_camera_frame(end, m, position, look_at, up);
+        const CameraFrame f(end);
+        motion.end = CameraBasis{f.position, f.right, f.up, f.forward};
+    }
+    m.reject_unknown_keys();
+    return motion;
+}
+
 void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget* budget) {
     c.has("medium");  // the medium it sits in: read by load_scene once the media are
     if (auto type = c.get("type"))
@@ -243,9 +290,12 @@ void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget* budget) {
     }
     if (auto v = c.get("near")) camera.near = v->number_f(Bounds::at_least(0));
     read_lens(c, camera);
+    if (auto v = c.get("shutter")) camera.shutter = read_time_interval(*v, "open", "close");
+    std::optional<JsonCursor> motion = c.get("motion");
     c.reject_unknown_keys();
     if (!camera.basis) check_camera_frame(camera, c, position, look_at, up);
     check_camera_extent(camera, c);
+    if (motion) camera.motion = read_camera_motion(*motion, camera);
 }
 
 // The sensor's keys (film/sensor.h): sensor names its responses (cie1931 or a camera); iso and exposure_time give the imaging ratio, which must

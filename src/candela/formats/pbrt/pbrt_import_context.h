@@ -22,7 +22,13 @@ struct AreaLight {
 };
 
 struct GraphicsState {
-    Transform ctm;  // object (or light, camera) space to world
+    Transform ctm;  // object (or light, camera) space to world, at the start time
+    // pbrt-v4's second CTM, at the end time (motion blur), and which of the two the transform
+    // directives change (ActiveTransform); TransformTimes' start and end.
+    Transform ctm_end;
+    bool start_active = true, end_active = true;
+    double start_time = 0.0, end_time = 1.0;
+    bool moving() const { return ctm.matrix() != ctm_end.matrix(); }
     bool reverse_orientation = false;
     std::string material;  // the JSON name of the current material
     std::optional<AreaLight> area_light;
@@ -104,6 +110,9 @@ class ImportContext {
 struct RenderOptions {
     std::optional<Params> camera, film, filter, sampler, integrator;
     Transform camera_from_world;
+    // At the end of the camera's transform times (the same as camera_from_world when it does not move).
+    Transform camera_from_world_end;
+    double camera_start_time = 0.0, camera_end_time = 1.0;
     std::string camera_medium;  // the outside medium at Camera (pbrt-v4's CameraMedium)
     std::optional<unsigned long long> seed;  // Option "seed"
 };

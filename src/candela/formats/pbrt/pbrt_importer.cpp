@@ -142,7 +142,7 @@ class Importer final : public Target {
     }
 
     // --- transforms -----------------------------------------------------------------------
-    void identity(const Location&) override { state_.ctm = Transform(); }
+    void identity(const Location&) override { set_active(Transform()); }
     void translate(double dx, double dy, double dz, const Location& at) override {
         apply(Transform::translate({dx, dy, dz}), at);
     }
@@ -164,26 +164,30 @@ class Importer final : public Target {
         apply(from_pbrt_matrix(m), at);
     }
     void transform(const std::array<double, 16>& m, const Location& at) override {
-        state_.ctm = Transform();
+        set_active(Transform());
         apply(from_pbrt_matrix(m), at);
     }
-    void coordinate_system(const std::string& name, const Location&) override { named_frames_[name] = state_.ctm; }
+    void coordinate_system(const std::string& name, const Location&) override {
+        named_frames_[name] = {state_.ctm, state_.ctm_end};
+    }
     void coord_sys_transform(const std::string& name, const Location& at) override {
         auto it = named_frames_.find(name);
         if (it == named_frames_.end()) {
             ctx_.warn(at, fmt::format("CoordSysTransform: no coordinate system named \"{}\"; ignored", name));
             return;
         }
-        state_.ctm = it->second;
+        // Both CTMs, whatever ActiveTransform says (pbrt-v4's CoordSysTransform).
+        state_.ctm = it->second.first;
+        state_.ctm_end = it->second.second;
     }
-    void active_transform(const std::string& which, const Location& at) override {
-        if (which != "All")
-            ctx_.warn(at, "ActiveTransform StartTime/EndTime (motion blur): candela renders the scene at one "
-                          "time; transforms given for the end time are ignored");
-        ignore_transforms_ = which == "EndTime";
+    void active_transform(const std::string& which, const Location&) override {
+        state_.start_active = which != "EndTime";
+        state_.end_active = which != "StartTime";
     }
-    void transform_times(double, double, const Location& at) override {
-        ctx_.warn(at, "TransformTimes (motion blur) is not supported; ignored");
+    void transform_times(double start, double end, const Location& at) override {
+        if (!(end > start)) fail(at, fmt::format("TransformTimes: the end time ({}) must be after the start ({})", end, start));
+        state_.start_time = start;
+        state_.end_time = end;
     }
     void reverse_orientation(const Location&) override { state_.reverse_orientation = !state_.reverse_orientation; }
     void attribute_begin(const Location& at) override {
@@ -227,8 +231,11 @@ class Importer final : public Target {
         before_world("Camera", at);
         options_.camera.emplace(std::move(params), fmt::format("Camera \"{}\"", type), at);
         options_.camera_from_world = state_.ctm;
+        options_.camera_from_world_end = state_.ctm_end;
+        options_.camera_start_time = state_.start_time;
+        options_.camera_end_time = state_.end_time;
         options_.camera_medium = state_.outside_medium;
-        named_frames_["camera"] = state_.ctm.inverse();
+        named_frames_["camera"] = {state_.ctm.inverse(), state_.ctm_end.inverse()};
     }
     void film(const std::string& type, ParameterList params, const Location& at) override {
         before_world("Film", at);
@@ -271,8 +278,8 @@ class Importer final : public Target {
         in_world_ = true;
         options_translated_ = true;
         integrator_follows_media_ = translate_options(options_, ctx_);
-        state_.ctm = Transform();
-        named_frames_["world"] = Transform();
+        state_.ctm = state_.ctm_end = Transform();
+        named_frames_["world"] = {Transform(), Transform()};
     }
 
     // --- the world ------------------------------------------------------------------------
@@ -321,6 +328,8 @@ class Importer final : public Target {
         if (!state_.outside_medium.empty() && !ctx_.has_medium(state_.outside_medium))
             fail(at, fmt::format("LightSource: medium \"{}\" is not defined (MakeNamedMedium must come first)",
                                  state_.outside_medium));
+        if (state_.moving())
+            ctx_.warn(at, "LightSource: animated lights are not supported (nor by pbrt-v4); the start transform is used");
         translate_light(type, p, state_.ctm, options_.camera_from_world.inverse().apply_point(Vec3d(0, 0, 0)), ctx_);
         finish(p);
     }
@@ -338,6 +347,12 @@ class Importer final : public Target {
         in_world("Shape", at);
         merge_defaults(params, state_.attributes["shape"]);
         Params p(std::move(params), fmt::format("Shape \"{}\"", type), at);
+        if (state_.moving()) {
+            // pbrt-v4 refuses a moving emitter (Shape on an AreaLightSource); candela does not
+            // trace moving shapes yet, so it renders them where they start.
+            if (state_.area_light && !object_) fail(at, "Shape: animated area lights are not supported (as in pbrt-v4)");
+            ctx_.warn(at, "Shape: moving shapes (motion blur) are not supported yet; rendered at the start transform");
+        }
         ensure_material();
         // pbrt-v4 looks the media up once the file is read: they may be defined after the shape.
         for (const std::string* m : {&state_.inside_medium, &state_.outside_medium})
@@ -390,6 +405,9 @@ class Importer final : public Target {
         if (it->second.empty) return;
         Json& shapes = ctx_.doc()["shapes"];
         Json instance{{"type", "instance"}, {"object", name}};
+        if (state_.moving())
+            ctx_.warn(at, "ObjectInstance: moving instances (motion blur) are not supported yet; rendered at the start "
+                          "transform");
         if (!state_.ctm.is_identity()) instance["transform"] = transform_json(state_.ctm);
         ctx_.origin(fmt::format("/shapes/{}", shapes.size()), at);
         shapes.push_back(std::move(instance));
@@ -413,10 +431,16 @@ class Importer final : public Target {
     void warn(const Location& at, const std::string& message) override { ctx_.warn(at, message); }
 
   private:
+    // Post-multiplies the active CTMs by t (ActiveTransform chooses which).
     void apply(const Transform& t, const Location& at) {
-        if (ignore_transforms_) return;
+        if (!state_.start_active && !state_.end_active) return;
         if (!t.invertible()) fail(at, "the transform is not invertible (a zero scale?)");
-        state_.ctm = state_.ctm * t;
+        if (state_.start_active) state_.ctm = state_.ctm * t;
+        if (state_.end_active) state_.ctm_end = state_.ctm_end * t;
+    }
+    void set_active(const Transform& t) {
+        if (state_.start_active) state_.ctm = t;
+        if (state_.end_active) state_.ctm_end = t;
     }
     void before_world(const char* directive, const Location& at) {
         if (in_world_) fail(at, fmt::format("{} must come before WorldBegin", directive));
@@ -445,13 +469,12 @@ class Importer final : public Target {
     ImportContext ctx_;
     GraphicsState state_;
     std::vector<std::pair<GraphicsState, Location>> stack_;
-    std::map<std::string, Transform> named_frames_;
+    std::map<std::string, std::pair<Transform, Transform>> named_frames_;  // at the start and end times
     RenderOptions options_;
     bool in_world_ = false;
     bool options_translated_ = false;
     bool integrator_follows_media_ = false;
     std::vector<std::pair<std::string, Location>> medium_uses_;  // media shapes name, and where
-    bool ignore_transforms_ = false;
     std::string default_material_;
     std::map<std::string, ObjectDefinition> objects_;
     ObjectDefinition* object_ = nullptr;

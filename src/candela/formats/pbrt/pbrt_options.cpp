@@ -28,7 +28,9 @@ std::string directive_type(const Params& p) {
 // A projective camera transform (pbrt-v4 takes any matrix) becomes the affine one that makes the
 // same rays: the origin where it takes the camera's (divided by w), the directions by the upper
 // 3x3 of its render-space transform (pbrt_directions), as pbrt-v4's pinhole camera makes them.
-void write_camera_frame(const Transform& camera_from_world, Json& camera) {
+// as_matrix: write the matrix even where the look_at form would do (a moving camera's two frames
+// take the same form). Returns whether the look_at form was written.
+bool write_camera_frame(const Transform& camera_from_world, Json& camera, bool as_matrix = false) {
     Transform world_from_camera = camera_from_world.inverse();
     if (!world_from_camera.is_affine()) {
         const Vec3d origin = world_from_camera.apply_point(Vec3d(0, 0, 0));
@@ -41,13 +43,35 @@ void write_camera_frame(const Transform& camera_from_world, Json& camera) {
     const Vec3d forward = normalize(world_from_camera.apply_vector(Vec3d(0, 0, 1)));
     const Vec3d up = normalize(world_from_camera.apply_vector(Vec3d(0, 1, 0)));
     const Vec3d right = world_from_camera.apply_vector(Vec3d(1, 0, 0));
-    if (dot(cross(forward, up), right) > 0) {
+    if (!as_matrix && dot(cross(forward, up), right) > 0) {
         camera["position"] = vec_json(position);
         camera["look_at"] = vec_json(position + forward);
         camera["up"] = vec_json(up);
-    } else {
-        camera["transform"] = transform_json(world_from_camera);
+        return true;
     }
+    camera["transform"] = transform_json(world_from_camera);
+    return false;
+}
+
+// A camera transform that differs at the end time (ActiveTransform EndTime before Camera): the
+// end frame becomes camera.motion, in the form of the start frame, with the transform times.
+void write_camera_motion(const RenderOptions& o, Json& camera) {
+    const Location at = o.camera ? o.camera->location() : Location{};
+    if (o.camera_from_world.swaps_handedness() != o.camera_from_world_end.swaps_handedness())
+        fail(at, "Camera: the camera transforms at the start and end times differ in handedness (one mirrors "
+                 "space); a moving camera cannot turn one into the other");
+    Json motion = Json::object();
+    const bool look_at = camera.contains("look_at");
+    if (write_camera_frame(o.camera_from_world_end, motion, !look_at) != look_at) {
+        // The end frame needs the matrix form: write both so.
+        for (const char* key : {"position", "look_at", "up"}) camera.erase(key);
+        motion = Json::object();
+        write_camera_frame(o.camera_from_world, camera, true);
+        write_camera_frame(o.camera_from_world_end, motion, true);
+    }
+    if (o.camera_start_time != 0.0 || o.camera_end_time != 1.0)
+        motion["times"] = Json::array({o.camera_start_time, o.camera_end_time});
+    camera["motion"] = std::move(motion);
 }
 
 void translate_camera(const RenderOptions& o, int width, int height, Json& camera, Json& film, ImportContext& ctx) {
@@ -66,6 +90,7 @@ void translate_camera(const RenderOptions& o, int width, int height, Json& camer
         const double open = p.float_or("shutteropen", 0.0), close = p.float_or("shutterclose", 1.0);
         if (!(close > open)) p.fail(p.find("shutterclose"), "shutterclose must be after shutteropen");
         if (close - open != 1.0) film["exposure_time"] = close - open;
+        if (open != 0.0 || close != 1.0) camera["shutter"] = Json::array({open, close});
         if (const Parameter* s = p.find("screenwindow")) {
             std::vector<double> w = p.numbers("screenwindow");
             if (w.size() != 4) p.fail(s, "screenwindow takes 4 numbers: xmin xmax ymin ymax");
@@ -103,6 +128,7 @@ void translate_camera(const RenderOptions& o, int width, int height, Json& camer
         camera["height"] = width >= height ? 2.0 : 2.0 * double(height) / double(width);
     }
     write_camera_frame(o.camera_from_world, camera);
+    if (o.camera_from_world.matrix() != o.camera_from_world_end.matrix()) write_camera_motion(o, camera);
     // pbrt-v4 looks the camera's medium up as the world begins.
     if (!o.camera_medium.empty()) {
         if (!ctx.has_medium(o.camera_medium))
