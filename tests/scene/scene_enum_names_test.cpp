@@ -60,7 +60,7 @@ TEST(EnumNames, UnknownNamesParseToNothing) {
 
 TEST(EnumNames, NamesListIsSortedAndCommaSeparated) {
     EXPECT_EQ(names_list(integrator_type_names()), "albedo, ao, bsdf, depth, normals, path, volpath, whitted");
-    EXPECT_EQ(names_list(light_selection_names()), "power, uniform");
+    EXPECT_EQ(names_list(light_selection_names()), "bvh, power, uniform");
     EXPECT_EQ(names_list(filter_type_names()), "box, gaussian, smallpt, tent");
     EXPECT_EQ(names_list(tonemap_names()), "aces, clamp, exposure, reinhard");
     EXPECT_EQ(names_list(transfer_names()), "gamma, srgb");

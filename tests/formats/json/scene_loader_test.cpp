@@ -101,7 +101,7 @@ TEST(SceneLoaderIntegrator, LightSelectionIsRead) {
     EXPECT_EQ(load_json(R"({"integrator": {"light_selection": "uniform"}})").integrator.light_selection,
               LightSelection::kUniform);
     EXPECT_EQ(load_error(R"({"integrator": {"light_selection": "random"}})").message(),
-              "unknown light selection \"random\"; expected one of: power, uniform");
+              "unknown light selection \"random\"; expected one of: bvh, power, uniform");
 }
 
 // ---- sampler
