@@ -16,15 +16,12 @@
 #include "candela/math/frame.h"
 #include "candela/sampling/rng.h"
 #include "candela/sampling/warps.h"
+#include "support/quadric_points.h"
 
 namespace candela {
 namespace {
 
-void expect_near(const Vec3d& a, const Vec3d& b, double tolerance) {
-    EXPECT_NEAR(a.x, b.x, tolerance);
-    EXPECT_NEAR(a.y, b.y, tolerance);
-    EXPECT_NEAR(a.z, b.z, tolerance);
-}
+using test::expect_near;
 
 TEST(Disk, RoundDiskFacingZHasPbrtsObjectAxes) {
     // pbrt-v4's Disk lies in z = height of its object space with phi measured from +x: a disk

@@ -17,15 +17,13 @@
 #include "candela/math/frame.h"
 #include "candela/sampling/rng.h"
 #include "candela/sampling/warps.h"
+#include "support/quadric_points.h"
 
 namespace candela {
 namespace {
 
-void expect_near(const Vec3d& a, const Vec3d& b, double tolerance) {
-    EXPECT_NEAR(a.x, b.x, tolerance);
-    EXPECT_NEAR(a.y, b.y, tolerance);
-    EXPECT_NEAR(a.z, b.z, tolerance);
-}
+using test::expect_near;
+using test::quadric_point_of_uv;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -175,22 +173,6 @@ TEST(QuadricIntersection, TransformedHitsLieOnTheTransformedSurface) {
 }
 
 // The point of (u, v) on each quadric, from pbrt-v4's parameterisation (the inverse of quadric_uv).
-Vec3d point_of_uv(const Quadric& q, double u, double v) {
-    const double phi = u * q.phi_max;
-    switch (q.kind) {
-        case QuadricKind::kCylinder: return {q.radius * std::cos(phi), q.radius * std::sin(phi), q.z_min + v * (q.z_max - q.z_min)};
-        case QuadricKind::kSphere: {
-            const double theta = q.theta_z_min + v * (q.theta_z_max - q.theta_z_min);
-            return Vec3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)) * q.radius;
-        }
-        case QuadricKind::kDisk: {
-            const double r = q.radius - v * (q.radius - q.inner_radius);
-            return {r * std::cos(phi), r * std::sin(phi), q.height};
-        }
-    }
-    return {};
-}
-
 TEST(QuadricShadingGeometry, DerivativesAreThoseOfTheParameterisation) {
     const Transform m = Transform::translate({0.5, 1, -1}) * Transform::rotate(normalize(Vec3d(-1, 2, 0.5)), 1.1) *
                         Transform::scale({1.5, 1.5, 1.5});
@@ -201,17 +183,17 @@ TEST(QuadricShadingGeometry, DerivativesAreThoseOfTheParameterisation) {
     for (const Quadric& q : quadrics) {
         for (double u : {0.1, 0.45, 0.8})
             for (double v : {0.2, 0.5, 0.9}) {
-                const Vec3d p = point_of_uv(q, u, v);
+                const Vec3d p = quadric_point_of_uv(q, u, v);
                 const ShadingGeometry g = quadric_shading_geometry(q, p, Vec3f(quadric_normal(q, p)));
                 EXPECT_NEAR(g.uv.x, u, 1e-6);
                 EXPECT_NEAR(g.uv.y, v, 1e-6);
-                const Vec3d dpdu = (m.apply_point(point_of_uv(q, u + h, v)) - m.apply_point(point_of_uv(q, u - h, v))) / (2 * h);
-                const Vec3d dpdv = (m.apply_point(point_of_uv(q, u, v + h)) - m.apply_point(point_of_uv(q, u, v - h))) / (2 * h);
+                const Vec3d dpdu = (m.apply_point(quadric_point_of_uv(q, u + h, v)) - m.apply_point(quadric_point_of_uv(q, u - h, v))) / (2 * h);
+                const Vec3d dpdv = (m.apply_point(quadric_point_of_uv(q, u, v + h)) - m.apply_point(quadric_point_of_uv(q, u, v - h))) / (2 * h);
                 expect_near(Vec3d(g.dpdu), dpdu, 1e-4 * length(dpdu));
                 expect_near(Vec3d(g.dpdv), dpdv, 1e-4 * length(dpdv));
                 // The normal's derivatives, likewise, against the world normal of the neighbours.
-                const Vec3d dndu = (quadric_normal(q, point_of_uv(q, u + h, v)) - quadric_normal(q, point_of_uv(q, u - h, v))) / (2 * h);
-                const Vec3d dndv = (quadric_normal(q, point_of_uv(q, u, v + h)) - quadric_normal(q, point_of_uv(q, u, v - h))) / (2 * h);
+                const Vec3d dndu = (quadric_normal(q, quadric_point_of_uv(q, u + h, v)) - quadric_normal(q, quadric_point_of_uv(q, u - h, v))) / (2 * h);
+                const Vec3d dndv = (quadric_normal(q, quadric_point_of_uv(q, u, v + h)) - quadric_normal(q, quadric_point_of_uv(q, u, v - h))) / (2 * h);
                 expect_near(Vec3d(g.dndu), dndu, 1e-4 * (1 + length(dndu)));
                 expect_near(Vec3d(g.dndv), dndv, 1e-4 * (1 + length(dndv)));
                 // pbrt-v4's orientation: cross(dpdu, dpdv) along the outward normal.

@@ -12,32 +12,16 @@
 #include "candela/geometry/quadric_intersection.h"
 #include "candela/lights/quadric_emitter.h"
 #include "support/chi2.h"
+#include "support/quadric_points.h"
 
 namespace candela::test {
 namespace {
 
 constexpr int kChi2Tests = 4;  // in this file, for the Sidak correction
 
-Vec3d point_of_uv(const Quadric& q, double u, double v) {
-    const double phi = u * q.phi_max;
-    switch (q.kind) {
-        case QuadricKind::kCylinder:
-            return {q.radius * std::cos(phi), q.radius * std::sin(phi), q.z_min + v * (q.z_max - q.z_min)};
-        case QuadricKind::kSphere: {
-            const double theta = q.theta_z_min + v * (q.theta_z_max - q.theta_z_min);
-            return Vec3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)) * q.radius;
-        }
-        case QuadricKind::kDisk: {
-            const double r = q.radius - v * (q.radius - q.inner_radius);
-            return {r * std::cos(phi), r * std::sin(phi), q.height};
-        }
-    }
-    return {};
-}
-
 // The claimed density per unit (u, v): area density times the world area element.
 double uv_pdf(const Quadric& q, const QuadricEmitter& e, Vec2f uv) {
-    const Vec3d p = point_of_uv(q, double(uv.x), double(uv.y));
+    const Vec3d p = quadric_point_of_uv(q, double(uv.x), double(uv.y));
     const Vec3f n(quadric_normal(q, p));
     const ShadingGeometry g = quadric_shading_geometry(q, p, n);
     return double(e.area_pdf(n)) * length(cross(Vec3d(g.dpdu), Vec3d(g.dpdv)));

@@ -98,15 +98,22 @@ TEST(MajorantGrid, VdbResolutionBoundsSigmaTToo) {
     EXPECT_GT(count_unbounded_points(0.9f, 29, MajorantGrid::kVdbRes), 100);
 }
 
-TEST(MajorantGrid, VdbResolutionWalksItsCells) {
+// A medium of density 1 in its box, placed by `medium_from_world`, with res^3 majorant cells.
+GridMedium uniform_medium(const Transform& medium_from_world, int res) {
     GridMedium m;
+    m.box.medium_from_world = affine_map_3f(medium_from_world);
     LatticeGrid d;
     d.nx = d.ny = d.nz = 1;
     d.values = {1.0f};
     m.density = cell_centred_field(std::move(d), m.box.bounds);
     m.sigma_a = test::grey_spectrum(1.0f);
     m.sigma_s = test::grey_spectrum(1.0f);
-    finish_grid_medium(m, MajorantGrid::kVdbRes);
+    finish_grid_medium(m, res);
+    return m;
+}
+
+TEST(MajorantGrid, VdbResolutionWalksItsCells) {
+    const GridMedium m = uniform_medium(Transform(), MajorantGrid::kVdbRes);
     ASSERT_EQ(m.majorant.cells.size(), size_t(64 * 64 * 64));
     Ray ray;
     ray.o = Vec3f(-1.0f, 0.5f, 0.3f);
@@ -120,15 +127,8 @@ TEST(MajorantGrid, SegmentsAreInTheWorldRaysUnits) {
     // A box [0, 1]^3 scaled by 2 and moved by 3 along x: the world box is [3, 5] x [0, 2]^2. A
     // unit ray along x from x = 0 enters at t = 3 and leaves at t = 5, through 16 cells of
     // length 1/8 each.
-    GridMedium m;
-    m.box.medium_from_world = affine_map_3f((Transform::translate(Vec3d(3, 0, 0)) * Transform::scale(Vec3d(2.0))).inverse());
-    LatticeGrid d;
-    d.nx = d.ny = d.nz = 1;
-    d.values = {1.0f};
-    m.density = cell_centred_field(std::move(d), m.box.bounds);
-    m.sigma_a = test::grey_spectrum(1.0f);
-    m.sigma_s = test::grey_spectrum(1.0f);
-    finish_grid_medium(m);
+    const GridMedium m =
+        uniform_medium((Transform::translate(Vec3d(3, 0, 0)) * Transform::scale(Vec3d(2.0))).inverse(), MajorantGrid::kRes);
     Ray ray;
     ray.o = Vec3f(0.0f, 0.5f, 1.1f);
     ray.d = Vec3f(1.0f, 0.0f, 0.0f);
