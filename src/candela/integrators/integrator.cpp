@@ -11,13 +11,23 @@
 
 namespace candela {
 
+namespace {
+
+// Whether some material is `interface`: a boundary between media that path skips and volpath
+// crosses.
+bool has_interface_material(const Scene& scene) {
+    return std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.interface; });
+}
+
+}  // namespace
+
 TransportIntegrator::TransportIntegrator(const Scene& scene, const Accelerator& accel, const LightSet& lights)
     : scene_(scene),
       accel_(accel),
       lights_(lights),
       any_material_uses_choice_(std::any_of(scene.materials.begin(), scene.materials.end(),
                                             [](const Material& m) { return m.bsdf.uses_choice(); })),
-      any_interface_(std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.interface; })),
+      any_interface_(has_interface_material(scene)),
       spectral_(scene.integrator.spectral),
       sensor_(make_sensor(scene.film)) {}
 
@@ -25,8 +35,7 @@ namespace {
 
 // Whether a scene has anything only volpath's loop handles: media or `interface` surfaces.
 bool needs_volume_transport(const Scene& scene) {
-    return !scene.media.empty() ||
-           std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.interface; });
+    return !scene.media.empty() || has_interface_material(scene);
 }
 
 }  // namespace
