@@ -40,7 +40,8 @@ TEST(SceneLoaderQuadrics, CylinderKeys) {
     EXPECT_TRUE(q.reverse_orientation);
     EXPECT_EQ(q.to_world.apply_point(Vec3d(0, 0, 0)).x, 1.0);
     // Defaults: pbrt-v4's z range [-1, 1], phi_max 360.
-    const Quadric& d = load_shape(R"("type": "cylinder", "radius": 1)").quadrics[0];
+    const Scene defaults = load_shape(R"("type": "cylinder", "radius": 1)");
+    const Quadric& d = defaults.quadrics[0];
     EXPECT_EQ(d.z_min, -1.0);
     EXPECT_EQ(d.z_max, 1.0);
     EXPECT_NEAR(d.phi_max, 2 * kPiD, 1e-15);
