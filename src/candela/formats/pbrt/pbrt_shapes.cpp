@@ -300,6 +300,12 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
     std::string material = state.material;
     if (p.has("alpha")) {
         Json alpha = p.number_or_texture("alpha", [&](const Parameter& t) { return ctx.texture_reference(t, true); });
+        if (state.area_light && alpha.is_number() && alpha.get<double>() <= 0 && !ctx.is_interface(material)) {
+            // pbrt-v4 masks an area light by its shape's alpha (DiffuseAreaLight::AlphaMasked): at
+            // alpha 0 the light emits nothing and the shape is invisible, so it adds nothing to the
+            // image (pbrt-v4 still spends light samples on it). candela leaves the shape out.
+            return;
+        }
         if (!(alpha.is_number() && alpha.get<double>() >= 1)) {
             if (ctx.is_interface(material))
                 ctx.warn(p.find("alpha")->location, "alpha on a shape of material \"interface\" is not supported; "
