@@ -50,8 +50,17 @@ def tokens(text):
             yield t
 
 
+DIRECTIVES = set("""Accelerator ActiveTransform AreaLightSource Attribute AttributeBegin AttributeEnd Camera
+    ColorSpace ConcatTransform CoordinateSystem CoordSysTransform Film Identity Import Include Integrator
+    LightSource LookAt MakeNamedMaterial MakeNamedMedium Material MediumInterface NamedMaterial ObjectBegin
+    ObjectEnd ObjectInstance Option PixelFilter ReverseOrientation Rotate Sampler Scale Shape Texture
+    Transform TransformBegin TransformEnd TransformTimes Translate WorldBegin WorldEnd""".split())
+PARAMETER_TYPES = set("""integer float point2 vector2 point3 vector3 normal normal3 point vector color rgb
+    spectrum blackbody bool string texture""".split())
+
+
 def is_directive(t):
-    return t[0].isalpha() and t[0].isupper()
+    return t in DIRECTIVES
 
 
 def directives(text):
@@ -76,8 +85,8 @@ def parameters(args):
     """The "type name" parameters of a directive and their values."""
     params, key = {}, None
     for a in args:
-        if a.startswith('"') and len(unquote(a).split()) == 2:
-            key = unquote(a)
+        if a.startswith('"') and len(unquote(a).split()) == 2 and unquote(a).split()[0] in PARAMETER_TYPES:
+            key = " ".join(unquote(a).split())
             params[key] = []
         elif key:
             params[key].append(unquote(a))
