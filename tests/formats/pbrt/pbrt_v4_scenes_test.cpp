@@ -14,7 +14,10 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
+
+#include <unistd.h>
 
 #include "candela/core/error.h"
 #include "candela/formats/mesh/gzip_stream.h"
@@ -33,13 +36,15 @@ std::string read_text(const fs::path& file) {
 }
 
 // The collection in the build tree, its gzip-compressed grids (NAME.nvdb.gz) inflated to the
-// NAME.nvdb its scenes name; made once per run.
-const fs::path& collection() {
-    static const fs::path root = [] {
-        const fs::path out = fs::path(CANDELA_TEST_BINARY_DIR) / "pbrt-v4-scenes";
-        fs::remove_all(out);
-        fs::copy(kSource, out, fs::copy_options::recursive);
-        for (const auto& e : fs::recursive_directory_iterator(out)) {
+// NAME.nvdb its scenes name; made once per process, in a folder of its own (ctest runs each test
+// as a process, in parallel), and removed when the process ends.
+class CollectionCopy {
+public:
+    CollectionCopy()
+        : root_(fs::path(CANDELA_TEST_BINARY_DIR) / ("pbrt-v4-scenes-" + std::to_string(::getpid()))) {
+        fs::remove_all(root_);
+        fs::copy(kSource, root_, fs::copy_options::recursive);
+        for (const auto& e : fs::recursive_directory_iterator(root_)) {
             const std::string name = e.path().filename().string();
             if (!name.ends_with(".nvdb.gz")) continue;
             std::string grid;
@@ -47,9 +52,22 @@ const fs::path& collection() {
             std::ofstream(e.path().parent_path() / name.substr(0, name.size() - 3), std::ios::binary)
                 .write(grid.data(), std::streamsize(grid.size()));
         }
-        return out;
-    }();
-    return root;
+    }
+    ~CollectionCopy() {
+        std::error_code ignored;
+        fs::remove_all(root_, ignored);
+    }
+    CollectionCopy(const CollectionCopy&) = delete;
+    CollectionCopy& operator=(const CollectionCopy&) = delete;
+    const fs::path& root() const { return root_; }
+
+private:
+    fs::path root_;
+};
+
+const fs::path& collection() {
+    static const CollectionCopy copy;
+    return copy.root();
 }
 
 // expected_warnings.txt: "[main file]" then its warnings (or "error: ..."), one a line, with
@@ -123,7 +141,7 @@ bool is_main_file(const fs::path& file) {
     return false;
 }
 
-TEST(PbrtV4Scenes, EachMainFileGivesExactlyTheWarningsOfItsManifest) {
+TEST(PbrtV4SceneCollection, EachMainFileGivesExactlyTheWarningsOfItsManifest) {
     const auto manifest = read_manifest();
     ASSERT_GE(manifest.size(), 9u);
     for (const auto& [file, expected] : manifest) {
@@ -135,7 +153,7 @@ TEST(PbrtV4Scenes, EachMainFileGivesExactlyTheWarningsOfItsManifest) {
     }
 }
 
-TEST(PbrtV4Scenes, TheManifestListsEveryMainFileOfTheFolder) {
+TEST(PbrtV4SceneCollection, TheManifestListsEveryMainFileOfTheFolder) {
     const auto manifest = read_manifest();
     int mains = 0;
     for (const auto& e : fs::recursive_directory_iterator(kSource)) {
@@ -147,7 +165,7 @@ TEST(PbrtV4Scenes, TheManifestListsEveryMainFileOfTheFolder) {
     EXPECT_EQ(mains, int(manifest.size()));
 }
 
-TEST(PbrtV4Scenes, EveryExpectedWarningIsOneDocsPbrtListsAsRemaining) {
+TEST(PbrtV4SceneCollection, EveryExpectedWarningIsOneDocsPbrtListsAsRemaining) {
     const std::vector<std::string> patterns = documented_remaining();
     ASSERT_FALSE(patterns.empty()) << "docs/PBRT.md has no \"Remaining in pbrt-v4-scenes\" table";
     for (const auto& [file, expected] : read_manifest()) {
@@ -161,7 +179,7 @@ TEST(PbrtV4Scenes, EveryExpectedWarningIsOneDocsPbrtListsAsRemaining) {
 }
 
 // The control: the comparison is strict both ways.
-TEST(PbrtV4Scenes, TheComparisonFailsOnAnUnexpectedWarningAndOnOneNoLongerGiven) {
+TEST(PbrtV4SceneCollection, TheComparisonFailsOnAnUnexpectedWarningAndOnOneNoLongerGiven) {
     const std::vector<std::string> expected = {"a.pbrt:1:1: W1", "a.pbrt:2:1: W2"};
     EXPECT_TRUE(differences(expected, {"a.pbrt:2:1: W2", "a.pbrt:1:1: W1"}).empty());
     EXPECT_EQ(differences(expected, {"a.pbrt:1:1: W1", "a.pbrt:2:1: W2", "a.pbrt:3:1: W3"}),
