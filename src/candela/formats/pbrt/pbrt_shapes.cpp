@@ -128,6 +128,7 @@ TriangleMesh read_bilinear_mesh(const Params& p) {
 // Whether a sphere of this material shows its (u, v) or tangent frame: textured parameters,
 // normal or bump maps, anisotropic roughness. Such spheres keep pbrt's parametrization.
 bool needs_sphere_frame(const std::string& material, ImportContext& ctx) {
+    if (ImportContext::is_later_material(material)) return true;  // unknown yet: keep pbrt's frame
     const Json& m = ctx.doc()["materials"][material];
     if (m.value("type", "") == "blend") return true;
     const std::string text = m.dump();
@@ -298,6 +299,8 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
         return;
     }
     std::string material = state.material;
+    if (p.has("alpha") && ImportContext::is_later_material(material))
+        p.fail(p.find("alpha"), "alpha on a shape whose NamedMaterial is defined later in the file is not supported");
     if (p.has("alpha")) {
         Json alpha = p.number_or_texture("alpha", [&](const Parameter& t) { return ctx.texture_reference(t, true); });
         if (state.area_light && alpha.is_number() && alpha.get<double>() <= 0 && !ctx.is_interface(material)) {
