@@ -182,6 +182,56 @@ TEST(Cli, AovFlagWritesLayersIntoExrAndBesideOtherFormats) {
     EXPECT_FALSE(fs::exists(dir / "img.albedo.exr"));  // inside the .exr, not beside it
 }
 
+// pbrt-v4's Film "gbuffer": candela's AOV layers under pbrt-v4's channel names, in the same EXR,
+// with position and normal in camera space (pbrt-v4's default) or world space. The scene: the
+// camera at (1, 2, -3) looking along +z at a diffuse wall in the plane z = 5 (8 in front of it).
+TEST(Cli, PbrtGbufferFilmWritesPbrtsChannelsInEitherSpace) {
+    const fs::path dir = temp_dir("gbuffer");
+    for (const std::string space : {"camera", "world"}) {
+        const fs::path scene = dir / (space + ".pbrt");
+        std::ofstream(scene) << "LookAt 1 2 -3  1 2 5  0 1 0\nCamera \"perspective\" \"float fov\" 30\n"
+                                "Sampler \"independent\" \"integer pixelsamples\" 4\n"
+                                "Film \"gbuffer\" \"integer xresolution\" 8 \"integer yresolution\" 8 "
+                                "\"string coordinatesystem\" \""
+                             << space
+                             << "\"\nWorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+                                "Material \"diffuse\" \"rgb reflectance\" [0.6 0.4 0.2]\n"
+                                "Shape \"trianglemesh\" \"point3 P\" [-20 -20 5  20 -20 5  20 20 5  -20 20 5] "
+                                "\"integer indices\" [0 1 2 0 2 3]\n";
+        const fs::path out = dir / (space + ".exr");
+        CliResult r = run_candela("render " + scene.string() + " --threads 2 -o " + out.string());
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;  // nothing that works warns
+        std::vector<std::string> names = candela::read_exr_channel_names(out);
+        std::sort(names.begin(), names.end());
+        EXPECT_EQ(names, (std::vector<std::string>{"Albedo.B", "Albedo.G", "Albedo.R", "B", "G", "Ns.X", "Ns.Y", "Ns.Z",
+                                                   "P.X", "P.Y", "P.Z", "R", "variance.B", "variance.G",
+                                                   "variance.R"}));
+        const candela::Image albedo = candela::read_exr_channels(out, {"Albedo.R", "Albedo.G", "Albedo.B"});
+        const candela::Image p = candela::read_exr_channels(out, {"P.X", "P.Y", "P.Z"});
+        const candela::Image n = candela::read_exr_channels(out, {"Ns.X", "Ns.Y", "Ns.Z"});
+        const bool camera = space == "camera";
+        double left_x = 0.0, right_x = 0.0;
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 8; ++x) {
+                const size_t i = size_t(y * 8 + x);
+                // The wall's reflectance, the same in every pixel (EXR halves: 2^-11 relative).
+                EXPECT_NEAR(albedo.pixels[i].r, 0.6f, 1e-3f);
+                EXPECT_NEAR(albedo.pixels[i].g, 0.4f, 1e-3f);
+                EXPECT_NEAR(albedo.pixels[i].b, 0.2f, 1e-3f);
+                // Every hit is on the plane: 8 ahead of the camera, or at world z = 5.
+                EXPECT_NEAR(p.pixels[i].b, camera ? 8.0f : 5.0f, 1e-2f) << x << " " << y;
+                // The normal faces the camera: -z in both spaces (the camera looks along world +z).
+                EXPECT_NEAR(n.pixels[i].b, -1.0f, 1e-3f);
+                EXPECT_NEAR(n.pixels[i].r, 0.0f, 1e-3f);
+                (x < 4 ? left_x : right_x) += double(p.pixels[i].r) / 32.0;
+            }
+        // Image right is the camera's +x (world +x here); the camera sits at world x = 1.
+        EXPECT_LT(left_x, right_x);
+        EXPECT_NEAR(0.5 * (left_x + right_x), camera ? 0.0 : 1.0, 0.05);
+    }
+}
+
 TEST(Cli, BadAovValuesAreRefused) {
     fs::path dir = temp_dir("aov_bad");
     const std::string out = " -o " + (dir / "x.exr").string();

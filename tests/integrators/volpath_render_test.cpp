@@ -11,7 +11,8 @@
 //   - NEE + phase/BSDF sampling (MIS), NEE alone, and phase/BSDF sampling alone (the bsdf
 //     integrator on a scene with media) agree on a fog-filled room with coloured glass and
 //     chromatic smoke;
-//   - grey media render the same in RGB and spectral mode.
+//   - grey media render the same in RGB and spectral mode;
+//   - `path` crosses `interface` shapes without counting a bounce, as pbrt-v4's path does.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -226,6 +227,37 @@ TEST(VolPath, ExtremelyDenseMediaDoNotHang) {
         EXPECT_EQ(r.stats.dropped_samples, 0u);
         for (const Rgb& p : r.image.pixels) EXPECT_TRUE(p.is_finite());
     }
+}
+
+// pbrt-v4's `path` on a scene with `interface` shapes: a crossing is no bounce (SkipIntersection),
+// shadow rays stop at the boundary, and light found straight through one counts in full. So
+// direct light alone (max_depth 1) through an interface between the camera and the floor and
+// another between the floor and the light is the direct light of the scene without them; it
+// reaches the floor by BSDF sampling only, hence the spp. (Counting a crossing as a bounce leaves
+// the floor black: its own control. The 1.1 scale is the usual one.)
+std::string interface_room_scene(bool with_interfaces, int spp) {
+    const std::string boundaries = with_interfaces ? R"(,
+        {"type": "quad", "corner": [-3, 2, -5], "edge1": [0, 0, 10], "edge2": [6, 0, 0], "material": "boundary"},
+        {"type": "quad", "corner": [-3, -3, -1], "edge1": [6, 0, 0], "edge2": [0, 6, 0], "material": "boundary"})"
+                                                   : "";
+    return R"({"integrator": {"type": "path", "max_depth": 1},
+      "sampler": {"type": "independent", "spp": )" + std::to_string(spp) + R"(, "seed": )" + (with_interfaces ? "5" : "6") + R"(},
+      "camera": {"position": [0, 1, -4], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 50, "resolution": [16, 16]},
+      "materials": {"white": {"type": "diffuse", "albedo": 0.7}, "boundary": {"type": "interface"},
+                    "lamp": {"type": "diffuse", "albedo": 0}},
+      "shapes": [
+        {"type": "quad", "corner": [-3, 0, -5], "edge1": [0, 0, 10], "edge2": [6, 0, 0], "material": "white"},
+        {"type": "quad", "corner": [-1, 3, -1], "edge1": [2, 0, 0], "edge2": [0, 0, 2], "material": "lamp", "emission": 4})" +
+           boundaries + "]}";
+}
+
+TEST(PathWithInterfaces, ACrossingIsNoBounceAsInPbrtV4sPath) {
+    const test::RenderMoments through = test::render_moments(scene_of(interface_room_scene(true, 2048)));
+    const test::RenderMoments open = test::render_moments(scene_of(interface_room_scene(false, 256)));
+    const test::ZTestFamily family = test::compare_blocks_and_whole(through, open, 4);
+    EXPECT_TRUE(family.passed()) << family.summary();
+    const test::ZTestFamily off = test::compare_blocks_and_whole(through, open, 4, 1.1);
+    EXPECT_FALSE(off.passed()) << off.summary();
 }
 
 }  // namespace

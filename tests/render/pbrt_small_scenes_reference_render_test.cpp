@@ -9,7 +9,8 @@
 // (tests/data/pbrt-media/README.md has the commands, times and numbers). The images are 96x96,
 // so the blocks are 8x8 pixels (144 of them), not the 16x16 of ../shared/refs/pbrt-v4/.
 //
-// Curves (issue 25): tests/data/pbrt-curves/ (README.md there), the same way.
+// Curves (issue 25): tests/data/pbrt-curves/ (README.md there), the same way; a named camera
+// sensor with maxcomponentvalue: tests/data/pbrt-sensor/.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -36,7 +37,7 @@ struct SmallScene {
 constexpr SmallScene kScenes[] = {
     {"fog-spot-glass", 0.02, 0.28}, {"grid-temperature", 0.02, 0.18}, {"rgbgrid-sphere", 0.02, 0.12},
     {"cloud-box", 0.01, 0.05},      {"vdb-smoke", 0.01, 0.04},     {"curves-diffuse", 0.01, 0.02, "pbrt-curves"},
-    {"curves-hair", 0.01, 0.065, "pbrt-curves"},
+    {"curves-hair", 0.01, 0.065, "pbrt-curves"},   {"sensor-caustic", 0.006, 0.055, "pbrt-sensor"},
 };
 
 // gtest prints the scene's name, not its bytes.

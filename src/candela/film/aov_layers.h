@@ -24,19 +24,32 @@ struct AovLayerInfo {
     int channels;                              // in the output
     int values;                                // doubles summed per pixel in the film (0: derived)
     std::array<std::string_view, 3> channel;   // OpenEXR channel names, the conventional ones
+    // The names pbrt-v4's GBufferFilm gives the same quantity (film.aov_names "pbrt"); empty where
+    // it has none of the same meaning (it has no depth or sample count, and its Variance is the
+    // variance of one sample's sensor RGB, not of the pixel's mean): the conventional ones stay.
+    std::array<std::string_view, 3> pbrt_channel;
 };
 
 // Indexed by AovLayer.
 inline constexpr std::array<AovLayerInfo, kAovLayerCount> kAovLayerInfo{{
-    {"albedo", 3, 3, {"albedo.R", "albedo.G", "albedo.B"}},
-    {"normal", 3, 3, {"N.X", "N.Y", "N.Z"}},
-    {"depth", 1, 1, {"Z", "", ""}},
-    {"position", 3, 3, {"P.X", "P.Y", "P.Z"}},
-    {"variance", 3, 0, {"variance.R", "variance.G", "variance.B"}},
-    {"spp", 1, 0, {"spp", "", ""}},
+    {"albedo", 3, 3, {"albedo.R", "albedo.G", "albedo.B"}, {"Albedo.R", "Albedo.G", "Albedo.B"}},
+    // The shading normal: pbrt-v4's Ns (its N is the geometric normal).
+    {"normal", 3, 3, {"N.X", "N.Y", "N.Z"}, {"Ns.X", "Ns.Y", "Ns.Z"}},
+    {"depth", 1, 1, {"Z", "", ""}, {}},
+    {"position", 3, 3, {"P.X", "P.Y", "P.Z"}, {"P.X", "P.Y", "P.Z"}},
+    {"variance", 3, 0, {"variance.R", "variance.G", "variance.B"}, {}},
+    {"spp", 1, 0, {"spp", "", ""}, {}},
 }};
 
 inline const AovLayerInfo& aov_layer_info(AovLayer layer) { return kAovLayerInfo[size_t(layer)]; }
+
+// The OpenEXR channel names the layers are written under (film.aov_names): the conventional
+// ones above, or pbrt-v4's GBufferFilm's where it has the quantity.
+enum class AovNames : uint8_t { kCandela, kPbrt };
+// The space of the position and normal layers (film.aov_space; pbrt-v4's GBufferFilm
+// "coordinatesystem"): world, or the camera's (x right, y up, z the view direction, origin at
+// the camera's position).
+enum class AovSpace : uint8_t { kWorld, kCamera };
 
 // The layer a name names, or nullopt.
 inline std::optional<AovLayer> parse_aov_layer(std::string_view name) {

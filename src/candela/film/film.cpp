@@ -71,7 +71,7 @@ void Film::add_aov_sample(int x, int y, const AovSample& sample, float weight) {
     add(AovLayer::kPosition, {sample.position.x, sample.position.y, sample.position.z});
 }
 
-std::vector<ImageLayer> Film::resolve_aovs(uint32_t samples_per_pixel) const {
+std::vector<ImageLayer> Film::resolve_aovs(uint32_t samples_per_pixel, AovNames names) const {
     std::vector<ImageLayer> layers;
     const double inv_spp = samples_per_pixel > 0 ? 1.0 / double(samples_per_pixel) : 0.0;
     for (int l = 0; l < kAovLayerCount; ++l) {
@@ -79,7 +79,9 @@ std::vector<ImageLayer> Film::resolve_aovs(uint32_t samples_per_pixel) const {
         const AovLayerInfo& info = aov_layer_info(layer);
         if (!aovs_.has(layer)) continue;
         ImageLayer out{std::string(info.name), info.channels, {}, Image(width_, height_)};
-        for (int c = 0; c < info.channels; ++c) out.channel_names[size_t(c)] = std::string(info.channel[size_t(c)]);
+        const bool pbrt = names == AovNames::kPbrt && !info.pbrt_channel[0].empty();
+        for (int c = 0; c < info.channels; ++c)
+            out.channel_names[size_t(c)] = std::string(pbrt ? info.pbrt_channel[size_t(c)] : info.channel[size_t(c)]);
         if (info.values == 0) {  // derived from the statistics (pixel_statistics.h)
             if (!statistics_) continue;
             out.image = layer == AovLayer::kVariance ? variance_image(*this) : spp_image(*this);

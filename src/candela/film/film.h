@@ -163,8 +163,8 @@ class Film {
     // As floats.
     Image resolve(uint32_t samples_per_pixel) const;
     // The summed AOV layers, resolved like resolve(), in AovLayer order, named and with their
-    // channels' names (film/aov_layers.h).
-    std::vector<ImageLayer> resolve_aovs(uint32_t samples_per_pixel) const;
+    // channels' names (film/aov_layers.h; pbrt-v4's where `names` asks for them and it has them).
+    std::vector<ImageLayer> resolve_aovs(uint32_t samples_per_pixel, AovNames names = AovNames::kCandela) const;
 
     int width() const { return width_; }
     int height() const { return height_; }

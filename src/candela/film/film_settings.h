@@ -16,6 +16,9 @@ namespace candela {
 // (a blackbody at 1000 K is a dim red; candles are about 1900 K).
 inline constexpr float kMinWhiteBalanceKelvin = 1000.0f;
 
+// FilmSettings::camera_sensor of pbrt-v4's default sensor, the CIE 1931 observer.
+inline constexpr int kCie1931Sensor = -1;
+
 // The first four are the scene file's filter names (film.filter as a string); the last three are
 // pbrt-v4's tabulated filters (film.filter as an object). Box and tent take a radius (pbrt-v4's box
 // and triangle); kGaussian is candela's truncated normal (sigma 0.5, radius 1.5, sampled exactly),
@@ -78,11 +81,17 @@ struct FilmSettings : DisplayEncoding {
     float iso = 100.0f;
     float exposure_time = 1.0f;  // seconds
     float white_balance = 0.0f;  // 0 or >= kMinWhiteBalanceKelvin
-    // pbrt-v4's RGBFilm maxcomponentvalue: each sample's sensor values (CIE XYZ times the imaging
-    // ratio) are scaled down so that the largest is at most this; infinity (the default): never.
+    // The sensor's responses (film.sensor): kCie1931Sensor, or an index into camera_responses()
+    // (spectrum/camera_sensors.h, pbrt-v4's named sensors; white_balance 0 is then 6500 K).
+    int camera_sensor = kCie1931Sensor;
+    // pbrt-v4's RGBFilm maxcomponentvalue: each sample's sensor values (its sensor RGB, CIE XYZ
+    // for cie1931, times the imaging ratio) are scaled down so that the largest is at most this; infinity (the default): never.
     float max_component_value = std::numeric_limits<float>::infinity();
-    // The AOV layers written beside the image (film.aovs, --aov): none by default.
+    // The AOV layers written beside the image (film.aovs, --aov): none by default; the channel
+    // names they are written under and the space of position and normal.
     AovLayers aovs;
+    AovNames aov_names = AovNames::kCandela;
+    AovSpace aov_space = AovSpace::kWorld;
 };
 
 // The sensor's imaging ratio: exposure_time * iso / 100 (pbrt-v4's PixelSensor::Create), exactly 1

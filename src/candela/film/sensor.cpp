@@ -1,7 +1,9 @@
 #include "candela/film/sensor.h"
 
 #include "candela/core/check.h"
+#include "candela/film/sensor_fit.h"
 #include "candela/spectrum/blackbody.h"
+#include "candela/spectrum/camera_sensors.h"
 #include "candela/spectrum/dense_spectrum.h"
 
 namespace candela {
@@ -61,7 +63,7 @@ Matrix3d white_balance_matrix(Vec2<double> from, Vec2<double> to) {
 }
 
 Sensor::Sensor(float imaging_ratio, float white_balance_kelvin)
-    : imaging_ratio_(imaging_ratio), white_balanced_(white_balance_kelvin != 0.0f) {
+    : imaging_ratio_(imaging_ratio), white_balanced_(white_balance_kelvin != 0.0f), maps_rgb_(white_balanced_) {
     CANDELA_CHECK(imaging_ratio > 0.0f && std::isfinite(imaging_ratio));
     CANDELA_CHECK(white_balance_kelvin == 0.0f || white_balance_kelvin >= 1000.0f);
     const SrgbColorSpace& srgb = srgb_color_space();
@@ -74,19 +76,39 @@ Sensor::Sensor(float imaging_ratio, float white_balance_kelvin)
     rgb_from_xyz_sum_ =
         to_float(scaled(rgb_from_sensor_xyz, double(imaging_ratio) / (kColorChannels * double(kCieYIntegral))));
     rgb_from_rgb_ = to_float(scaled(rgb_from_sensor_xyz * srgb.xyz_from_rgb, double(imaging_ratio)));
+    sensor_from_rgb_ = to_float(scaled(srgb.xyz_from_rgb, double(imaging_ratio)));
 }
 
-Sensor::Sensor(float imaging_ratio, float white_balance_kelvin, float max_component_value)
-    : Sensor(imaging_ratio, white_balance_kelvin) {
+Sensor::Sensor(float imaging_ratio, float white_balance_kelvin, float max_component_value, int camera_sensor)
+    : Sensor(imaging_ratio, camera_sensor == kCie1931Sensor ? white_balance_kelvin : 0.0f) {
     CANDELA_CHECK(max_component_value > 0.0f);
     clamps_ = std::isfinite(max_component_value);
     max_component_value_ = max_component_value;
     sensor_from_xyz_sum_ = float(double(imaging_ratio) / (kColorChannels * double(kCieYIntegral)));
-    sensor_from_rgb_ = to_float(scaled(srgb_color_space().xyz_from_rgb, double(imaging_ratio)));
+    if (camera_sensor == kCie1931Sensor) return;
+
+    // A measured camera (pbrt-v4's PixelSensor(r, g, b, ...)): its responses, and the fitted
+    // matrix in place of the white balance. pbrt-v4 white-balances a named sensor to 6500 K
+    // daylight when the film gives no temperature.
+    const std::span<const CameraResponse> cameras = camera_responses();
+    CANDELA_CHECK(camera_sensor >= 0 && size_t(camera_sensor) < cameras.size());
+    const CameraResponse& camera = cameras[size_t(camera_sensor)];
+    r_bar_ = camera.r.v.data();
+    g_bar_ = camera.g.v.data();
+    b_bar_ = camera.b.v.data();
+    const float kelvin = white_balance_kelvin == 0.0f ? kCameraDefaultWhiteBalance : white_balance_kelvin;
+    white_balanced_ = true;
+    maps_rgb_ = true;
+    const Matrix3d rgb_from_sensor = srgb_color_space().rgb_from_xyz * xyz_from_camera_rgb(camera, kelvin);
+    rgb_from_xyz_sum_ =
+        to_float(scaled(rgb_from_sensor, double(imaging_ratio) / (kColorChannels * double(kCieYIntegral))));
+    const Matrix3d sensor_from_rgb = camera_rgb_from_linear_srgb(camera);
+    rgb_from_rgb_ = to_float(scaled(rgb_from_sensor * sensor_from_rgb, double(imaging_ratio)));
+    sensor_from_rgb_ = to_float(scaled(sensor_from_rgb, double(imaging_ratio)));
 }
 
 Sensor make_sensor(const FilmSettings& film) {
-    return Sensor(imaging_ratio(film), film.white_balance, film.max_component_value);
+    return Sensor(imaging_ratio(film), film.white_balance, film.max_component_value, film.camera_sensor);
 }
 
 }  // namespace candela

@@ -6,7 +6,18 @@
 
 namespace candela {
 
-AovTracer::AovTracer(const Scene& scene, const Accelerator& accel) : scene_(scene), accel_(accel) {}
+AovTracer::AovTracer(const Scene& scene, const Accelerator& accel)
+    : scene_(scene), accel_(accel), camera_space_(scene.film.aov_space == AovSpace::kCamera), frame_(scene.camera) {}
+
+namespace {
+
+// Camera-space coordinates of a world-space vector: its components along the frame's axes (unit
+// and perpendicular, so the dot products invert to_world).
+Vec3f to_camera(const CameraFrame& f, const Vec3f& v) {
+    return Vec3f(dot(v, f.right), dot(v, f.up), dot(v, f.forward));
+}
+
+}  // namespace
 
 AovSample AovTracer::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const {
     AovSample aov{Rgb(0.0f), Vec3f(0.0f), kAovMissDepth, Vec3f(0.0f)};
@@ -33,6 +44,11 @@ AovSample AovTracer::trace(const Ray& camera_ray, Sampler& sampler, RayCounters&
         if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) break;
         tint = tint * to_rgb(bs->f * (std::abs(bs->wi.z) / bs->pdf));
         ray = spawn_ray(v.hit, v.frame.to_world(bs->wi));
+    }
+    if (camera_space_) {
+        // A miss keeps its zeros (pbrt-v4 writes 0 where no surface was seen).
+        if (aov.depth != kAovMissDepth) aov.position = to_camera(frame_, aov.position - frame_.position);
+        aov.normal = to_camera(frame_, aov.normal);
     }
     return aov;
 }

@@ -9,9 +9,12 @@
 // probability, as the path does) and multiplies the albedo found behind them by the chain's
 // sampled weight f |cos| / pdf, the specular tint (1 for clear glass and a white mirror), as
 // Cycles' denoising albedo does. Depth and position are the first hit's, through no mirror.
+// Position and normal are in world space, or in the camera's (film.aov_space "camera", pbrt-v4's
+// GBufferFilm default: x right, y up, z the view direction, origin at the camera).
+#include "candela/camera/camera_frame.h"
 #include "candela/film/film.h"
-#include "candela/math/ray.h"
 #include "candela/integrators/ray_counters.h"
+#include "candela/math/ray.h"
 #include "candela/sampling/sampler.h"
 
 namespace candela {
@@ -33,6 +36,8 @@ class AovTracer {
   private:
     const Scene& scene_;
     const Accelerator& accel_;
+    bool camera_space_;  // film.aov_space is kCamera
+    CameraFrame frame_;  // the camera's, for camera space
 };
 
 // The longest chain of perfectly specular vertices followed before giving up (albedo and

@@ -17,6 +17,7 @@ TransportIntegrator::TransportIntegrator(const Scene& scene, const Accelerator& 
       lights_(lights),
       any_material_uses_choice_(std::any_of(scene.materials.begin(), scene.materials.end(),
                                             [](const Material& m) { return m.bsdf.uses_choice(); })),
+      any_interface_(std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.interface; })),
       spectral_(scene.integrator.spectral),
       sensor_(make_sensor(scene.film)) {}
 

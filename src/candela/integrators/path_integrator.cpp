@@ -6,6 +6,9 @@ namespace candela {
 // pbrt-v4's PathIntegrator::Li. At each vertex: emission found
 // by the BSDF-sampled ray (MIS-weighted against having sampled the light), then one light sample
 // (MIS-weighted against having sampled the BSDF), then the next direction by BSDF sampling.
+// An `interface` surface (a boundary between media, which path ignores as pbrt-v4's path does)
+// has no BSDF: the ray goes straight through without counting a bounce, and the next emitter it
+// finds counts in full, as after a delta bounce (pbrt-v4's SkipIntersection with specularBounce).
 template <>
 template <bool kSpectral>
 Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& counters, SampledWavelengths* w) const {
@@ -24,8 +27,9 @@ Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters
     SpectralEmissionCache emission_cache_storage;
     SpectralBsdfCache* bsdf_cache = kSpectral ? &bsdf_cache_storage : nullptr;
     SpectralEmissionCache* emission_cache = kSpectral ? &emission_cache_storage : nullptr;
-    for (int bounces = 0;; ++bounces) {
-        ++(bounces == 0 ? counters.camera : counters.bounce);
+    int bounces = 0;  // vertices with a BSDF so far; an `interface` crossing is none
+    for (int segment = 0;; ++segment) {
+        ++(segment == 0 ? counters.camera : counters.bounce);
         // This vertex's random numbers, drawn while the ray is traced (path_common.h).
         const LightNumbers light_numbers = draw_light_numbers(sampler, lights_);
         const BsdfNumbers bsdf_numbers = draw_bsdf_numbers(sampler, any_material_uses_choice_);
@@ -51,6 +55,11 @@ Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters
             }
             // Without MIS, NEE alone accounts for light reached after a non-delta bounce.
         }
+        if (any_interface_ && scene_.materials[scene_.shapes[hit->shape_id].material].interface) {
+            ray = spawn_ray(*hit, ray.d);
+            after_delta = true;
+            continue;
+        }
         if (bounces == scene_.integrator.max_depth) break;
 
         PathVertex v = make_vertex<kSpectral>(scene_, accel_, *hit, ray, w, bsdf_cache);
@@ -64,6 +73,7 @@ Color PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters
         prev_bsdf_pdf = bs->pdf;
         prev_p = hit->p;
         if (!survive_russian_roulette(beta, eta_scale, bounces + 1, scene_.integrator, roulette_number)) break;
+        ++bounces;
     }
     return L;
 }

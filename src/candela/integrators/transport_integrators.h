@@ -50,6 +50,7 @@ class TransportIntegrator : public Integrator {
     const Accelerator& accel_;
     const LightSet& lights_;
     bool any_material_uses_choice_ = false;  // some material reads the lobe-choice number
+    bool any_interface_ = false;             // some material is `interface` (path passes through it)
     bool spectral_ = false;                  // IntegratorSettings::spectral
     Sensor sensor_;                          // the film's (iso, exposure_time, white_balance)
 };

@@ -11,8 +11,9 @@ GridField make_le_scale_field(float value, const Bounds3f& bounds) {
     return cell_centred_field(std::move(one), bounds);
 }
 
-void finish_grid_medium(GridMedium& m) {
-    m.majorant = make_majorant_grid(m.box.bounds, [&](const Bounds3f& cell, const Bounds3f&) { return m.density.max_over(cell); });
+void finish_grid_medium(GridMedium& m, int majorant_res) {
+    m.majorant = make_majorant_grid(
+        m.box.bounds, [&](const Bounds3f& cell, const Bounds3f&) { return m.density.max_over(cell); }, majorant_res);
     const bool hot = !m.temperature.empty();
     if (hot && m.blackbody_rgb.empty()) m.blackbody_rgb = make_blackbody_rgb_table();
     m.emissive = hot || !m.Le.is_black();

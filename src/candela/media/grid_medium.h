@@ -79,9 +79,9 @@ struct GridMedium {
 // pbrt-v4's default Le_scale (scaled by `value`): a 1x1x1 grid over the box (see above).
 GridField make_le_scale_field(float value, const Bounds3f& bounds);
 
-// Completes a GridMedium whose other members are set: the majorant grid from the density, the
-// blackbody table when there is a temperature grid, `emissive`. Le_scale must not be empty when
-// the medium emits.
-void finish_grid_medium(GridMedium& m);
+// Completes a GridMedium whose other members are set: the majorant grid of majorant_res^3 cells
+// from the density (pbrt-v4: 16 for uniformgrid, 64 for nanovdb), the blackbody table when there
+// is a temperature grid, `emissive`. Le_scale must not be empty when the medium emits.
+void finish_grid_medium(GridMedium& m, int majorant_res = MajorantGrid::kRes);
 
 }  // namespace candela

@@ -1,5 +1,6 @@
 #pragma once
-// pbrt-v4's MajorantGrid and DDAMajorantIterator: a coarse grid (16^3) over a medium's box whose
+// pbrt-v4's MajorantGrid and DDAMajorantIterator: a coarse grid (16^3, or 64^3 for the VDB grids,
+// as pbrt-v4 has them for its uniformgrid/rgbgrid and nanovdb media) over a medium's box whose
 // every cell holds a bound on the medium's density scale in that cell, and the walk of a ray
 // through its cells (Amanatides & Woo 1987), which yields one MajorantSegment per cell crossed.
 // Delta and ratio tracking then draw distances against a majorant close to the medium where it
@@ -20,14 +21,16 @@
 namespace candela {
 
 struct MajorantGrid {
-    static constexpr int kRes = 16;  // cells per axis, as pbrt-v4
-    Bounds3f bounds;                 // the medium's box, medium space
-    std::vector<float> cells;        // kRes^3, x fastest
+    static constexpr int kRes = 16;     // cells per axis of the uniformgrid and rgbgrid media, as pbrt-v4
+    static constexpr int kVdbRes = 64;  // of the nanovdb and openvdb media, as pbrt-v4's NanoVDBMedium
+    int res = kRes;                     // cells per axis
+    Bounds3f bounds;                    // the medium's box, medium space
+    std::vector<float> cells;           // res^3, x fastest
 
-    CANDELA_HD float at(int x, int y, int z) const { return cells[size_t((z * kRes + y) * kRes + x)]; }
+    CANDELA_HD float at(int x, int y, int z) const { return cells[size_t((z * res + y) * res + x)]; }
     // Cell (x, y, z) as a box of [0, 1]^3, the unit cube of `bounds` (pbrt-v4's VoxelBounds).
-    CANDELA_HD static Bounds3f unit_cell(int x, int y, int z) {
-        constexpr float n = float(kRes);
+    CANDELA_HD Bounds3f unit_cell(int x, int y, int z) const {
+        const float n = float(res);
         return {Vec3f(float(x) / n, float(y) / n, float(z) / n),
                 Vec3f(float(x + 1) / n, float(y + 1) / n, float(z + 1) / n)};
     }
@@ -39,16 +42,18 @@ struct MajorantGrid {
     }
 };
 
-// The grid over `bounds` whose cell (x, y, z) is bound(its medium-space box, its box in [0, 1]^3).
+// The grid of `res`^3 cells over `bounds` whose cell (x, y, z) is bound(its medium-space box, its
+// box in [0, 1]^3).
 template <class F>
-MajorantGrid make_majorant_grid(const Bounds3f& bounds, F&& bound) {
+MajorantGrid make_majorant_grid(const Bounds3f& bounds, F&& bound, int res = MajorantGrid::kRes) {
     MajorantGrid g;
+    g.res = res;
     g.bounds = bounds;
-    constexpr int n = MajorantGrid::kRes;
+    const int n = res;
     g.cells.resize(size_t(n * n * n));
     for (int z = 0; z < n; ++z)
         for (int y = 0; y < n; ++y)
-            for (int x = 0; x < n; ++x) g.cells[size_t((z * n + y) * n + x)] = bound(g.medium_cell(x, y, z), MajorantGrid::unit_cell(x, y, z));
+            for (int x = 0; x < n; ++x) g.cells[size_t((z * n + y) * n + x)] = bound(g.medium_cell(x, y, z), g.unit_cell(x, y, z));
     return g;
 }
 
@@ -65,7 +70,7 @@ class DdaMajorantIterator {
     CANDELA_HD DdaMajorantIterator(const Ray& ray, float t_min, float t_max, const MajorantGrid* grid,
                                    const Color& sigma_t)
         : sigma_t_(sigma_t), t_min_(t_min), t_max_(t_max), grid_(grid) {
-        constexpr int n = MajorantGrid::kRes;
+        const int n = grid->res;
         const Vec3f diag = grid->bounds.diagonal();
         // The ray in the grid's unit cube, where cell faces lie at multiples of 1/n.
         const Vec3f o = (ray.o - grid->bounds.lo);

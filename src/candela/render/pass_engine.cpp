@@ -62,11 +62,10 @@ std::vector<Tile> render_tiles(int width, int height, const RenderOptions& optio
     return make_tiles(width, height, adaptive ? adaptive_tile_size(size) : size);
 }
 
-PassEngine::PassEngine(const FrameRenderer& frame, const Scene& scene, const RenderOptions& options,
-                       RenderState start)
-    : frame_(frame), options_(options), spp_(uint32_t(scene.sampler.spp)), adaptive_(scene.sampler.adaptive),
-      target_(options.target_error > 0.0), decisions_(makes_decisions(scene, options)),
-      first_decision_(first_decision_point(adaptive_)),
+PassEngine::PassEngine(const FrameRenderer& frame, const Scene& scene, const RenderOptions& options, RenderState start)
+    : frame_(frame), options_(options), spp_(uint32_t(scene.sampler.spp)), aov_names_(scene.film.aov_names),
+      adaptive_(scene.sampler.adaptive), target_(options.target_error > 0.0),
+      decisions_(makes_decisions(scene, options)), first_decision_(first_decision_point(adaptive_)),
       tiles_(render_tiles(frame.width(), frame.height(), options, decisions_)), state_(std::move(start)) {
     check_start_state(frame, state_, needs_statistics(scene, options));
     for (const Tile& tile : tiles_) pixels_ += uint64_t(tile.pixels());
@@ -179,7 +178,7 @@ RenderResult PassEngine::run(PassExecutor& executor) {
     stats.relmse_estimate = relmse_estimate_;
     stats.converged = converged_;
     result.image = state_.film.resolve(state_.samples_done);
-    result.aov_layers = state_.film.resolve_aovs(state_.samples_done);
+    result.aov_layers = state_.film.resolve_aovs(state_.samples_done, aov_names_);
     result.state = std::move(state_);
     return result;
 }

@@ -14,6 +14,7 @@
 #include <optional>
 #include <vector>
 
+#include "candela/film/aov_layers.h"
 #include "candela/render/render_options.h"
 #include "candela/render/tile.h"
 #include "candela/scene/render_settings.h"
@@ -83,6 +84,7 @@ class PassEngine {
     const FrameRenderer& frame_;
     const RenderOptions& options_;
     const uint32_t spp_;
+    const AovNames aov_names_;  // the channel names of the AOV layers in the result
     const std::optional<AdaptiveSettings> adaptive_;
     const bool target_;      // options.target_error > 0
     const bool decisions_;   // adaptive sampling or a target: passes end at decision points

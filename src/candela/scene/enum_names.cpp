@@ -4,6 +4,8 @@
 #include <array>
 #include <vector>
 
+#include "candela/spectrum/camera_sensors.h"
+
 namespace candela {
 
 namespace {
@@ -103,6 +105,26 @@ size_t edit_distance(std::string_view a, std::string_view b) {
         std::swap(prev, cur);
     }
     return prev[n];
+}
+
+std::string_view sensor_name(int camera_sensor) {
+    return camera_sensor == kCie1931Sensor ? sensor_names()[0] : camera_responses()[size_t(camera_sensor)].name;
+}
+
+std::optional<int> parse_sensor(std::string_view name) {
+    if (name == sensor_names()[0]) return kCie1931Sensor;
+    const int i = camera_response_index(name);
+    if (i < 0) return std::nullopt;
+    return i;
+}
+
+std::span<const std::string_view> sensor_names() {
+    static const std::vector<std::string_view> names = [] {
+        std::vector<std::string_view> n{"cie1931"};
+        for (const CameraResponse& c : camera_responses()) n.push_back(c.name);
+        return n;
+    }();
+    return names;
 }
 
 std::optional<std::string> closest_name(std::string_view typo,

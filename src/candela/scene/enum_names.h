@@ -32,6 +32,13 @@ std::optional<Tonemap> parse_tonemap(std::string_view name);
 std::optional<Transfer> parse_transfer(std::string_view name);
 std::optional<Metal> parse_metal(std::string_view name);
 
+// The film's sensors (FilmSettings::camera_sensor): "cie1931" for kCie1931Sensor, else the
+// camera's name (spectrum/camera_sensors.h, pbrt-v4's names). sensor_names() lists "cie1931"
+// first, then the cameras in camera_responses()'s order.
+std::string_view sensor_name(int camera_sensor);
+std::optional<int> parse_sensor(std::string_view name);
+std::span<const std::string_view> sensor_names();
+
 // Every valid name of a kind, in the enum's order.
 std::span<const std::string_view> integrator_type_names();
 std::span<const std::string_view> filter_type_names();

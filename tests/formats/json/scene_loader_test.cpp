@@ -8,6 +8,7 @@
 #include <string>
 
 #include "candela/scene/enum_names.h"
+#include "candela/spectrum/camera_sensors.h"
 #include "formats/json/scene_test_util.h"
 
 namespace candela {
@@ -252,6 +253,33 @@ TEST(SceneLoaderFilm, WhiteBalanceIsRead) {
     EXPECT_EQ(load_error(R"({"film": {"white_balance": -5000}})").message(), "expected a number >= 0, got -5000");
 }
 
+TEST(SceneLoaderFilm, SensorNamesTheResponses) {
+    EXPECT_EQ(load_json(R"({})").film.camera_sensor, kCie1931Sensor);
+    EXPECT_EQ(load_json(R"({"film": {"sensor": "cie1931"}})").film.camera_sensor, kCie1931Sensor);
+    const Scene s = load_json(R"({"film": {"sensor": "sony_ilce_9"}})");
+    EXPECT_EQ(s.film.camera_sensor, camera_response_index("sony_ilce_9"));
+    EXPECT_EQ(sensor_name(s.film.camera_sensor), "sony_ilce_9");
+    const SceneError e = load_error(R"({"film": {"sensor": "sony_ilce9"}})");
+    EXPECT_EQ(e.where().json_pointer, "/film/sensor");
+    EXPECT_TRUE(e.message().starts_with("unknown sensor \"sony_ilce9\"; expected one of: canon_eos_100d, "))
+        << e.message();
+    EXPECT_EQ(load_error(R"({"film": {"sensor": 3}})").where().json_pointer, "/film/sensor");
+}
+
+TEST(SceneLoaderFilm, AovNamesAndSpaceAreRead) {
+    const Scene d = load_json(R"({})");
+    EXPECT_EQ(d.film.aov_names, AovNames::kCandela);
+    EXPECT_EQ(d.film.aov_space, AovSpace::kWorld);
+    const Scene s = load_json(R"({"film": {"aovs": ["albedo"], "aov_names": "pbrt", "aov_space": "camera"}})");
+    EXPECT_EQ(s.film.aov_names, AovNames::kPbrt);
+    EXPECT_EQ(s.film.aov_space, AovSpace::kCamera);
+    EXPECT_EQ(load_json(R"({"film": {"aov_names": "candela", "aov_space": "world"}})").film.aov_space,
+              AovSpace::kWorld);
+    EXPECT_EQ(load_error(R"({"film": {"aov_space": "screen"}})").message(),
+              "unknown AOV space \"screen\"; expected one of: camera, world");
+    EXPECT_EQ(load_error(R"({"film": {"aov_names": "mitsuba"}})").where().json_pointer, "/film/aov_names");
+}
+
 // ---- unknown keys
 
 TEST(SceneLoader, UnknownKeysInEverySectionAreErrors) {
@@ -263,9 +291,10 @@ TEST(SceneLoader, UnknownKeysInEverySectionAreErrors) {
               "unknown key \"lookat\" (did you mean \"look_at\"?)");
     EXPECT_EQ(load_error(R"({"film": {"tone_map": "aces"}})").message(),
               "unknown key \"tone_map\" (did you mean \"tonemap\"?)");
-    EXPECT_EQ(load_error(R"({"film": {"sensor": "cie1931"}})").message(),
-              "unknown key \"sensor\"; expected one of: aovs, crop_window, exposure, exposure_time, filename, filter, gamma, "
-              "iso, max_component_value, tonemap, transfer, white_balance");
+    EXPECT_EQ(
+        load_error(R"({"film": {"pixelbounds": [0, 8, 0, 8]}})").message(),
+        "unknown key \"pixelbounds\"; expected one of: aov_names, aov_space, aovs, crop_window, exposure, "
+        "exposure_time, filename, filter, gamma, iso, max_component_value, sensor, tonemap, transfer, white_balance");
     // A misspelt section is reported before anything that depends on it.
     SceneError e = load_error(R"({"shapes": [{"type": "sphere", "center": [0, 0, 0],
                                               "radius": 1, "material": "m"}],

@@ -10,6 +10,7 @@
 #include "candela/core/error.h"
 #include "candela/formats/pbrt/pbrt_importer.h"
 #include "candela/formats/pbrt/pbrt_scene_loader.h"
+#include "candela/scene/enum_names.h"
 
 namespace candela::pbrt {
 namespace {
@@ -98,6 +99,53 @@ TEST(PbrtImporter, MaxComponentValueIsTheFilmsClamp) {
     EXPECT_NE(error_of("Film \"rgb\" \"float maxcomponentvalue\" 0\nWorldBegin\n" + std::string(kLight))
                   .find("maxcomponentvalue must be > 0"),
               std::string::npos);
+}
+
+TEST(PbrtImporter, NamedSensorIsTheFilmsSensor) {
+    const ImportedScene s = import(std::string("Film \"rgb\" \"string sensor\" \"canon_eos_5d_mkiv\" "
+                                               "\"float iso\" 250 \"float whitebalance\" 4500\nWorldBegin\n") +
+                                   kLight);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+    EXPECT_EQ(s.document["film"]["sensor"], "canon_eos_5d_mkiv");
+    const Scene scene = load_imported_scene(s, kFile);
+    EXPECT_EQ(sensor_name(scene.film.camera_sensor), "canon_eos_5d_mkiv");
+    EXPECT_EQ(scene.film.iso, 250.0f);
+    EXPECT_EQ(scene.film.white_balance, 4500.0f);
+    // cie1931, pbrt-v4's default, writes nothing.
+    EXPECT_FALSE(import("Film \"rgb\" \"string sensor\" \"cie1931\"\nWorldBegin\n" + std::string(kLight))
+                     .document["film"]
+                     .contains("sensor"));
+    EXPECT_NE(error_of("Film \"rgb\" \"string sensor\" \"kodak\"\nWorldBegin\n" + std::string(kLight))
+                  .find("unknown sensor \"kodak\"; expected one of: canon_eos_100d"),
+              std::string::npos);
+}
+
+TEST(PbrtImporter, GbufferFilmIsTheRgbFilmWithPbrtsAovLayers) {
+    const ImportedScene s =
+        import(std::string("Film \"gbuffer\" \"string filename\" \"g.exr\"\nWorldBegin\n") + kLight);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+    const auto& film = s.document["film"];
+    EXPECT_EQ(film["aovs"], nlohmann::ordered_json::array({"albedo", "normal", "position", "variance"}));
+    EXPECT_EQ(film["aov_names"], "pbrt");
+    EXPECT_EQ(film["aov_space"], "camera");  // pbrt-v4's default coordinatesystem
+    const Scene scene = load_imported_scene(s, kFile);
+    EXPECT_TRUE(scene.film.aovs.has(AovLayer::kAlbedo) && scene.film.aovs.has(AovLayer::kNormal) &&
+                scene.film.aovs.has(AovLayer::kPosition) && scene.film.aovs.has(AovLayer::kVariance));
+    EXPECT_FALSE(scene.film.aovs.has(AovLayer::kDepth));
+    EXPECT_EQ(scene.film.aov_names, AovNames::kPbrt);
+    EXPECT_EQ(scene.film.aov_space, AovSpace::kCamera);
+    const ImportedScene w =
+        import(std::string("Film \"gbuffer\" \"string coordinatesystem\" \"world\"\nWorldBegin\n") + kLight);
+    EXPECT_EQ(load_imported_scene(w, kFile).film.aov_space, AovSpace::kWorld);
+    EXPECT_NE(error_of("Film \"gbuffer\" \"string coordinatesystem\" \"screen\"\nWorldBegin\n" + std::string(kLight))
+                  .find("unknown coordinate system \"screen\" for the gbuffer film"),
+              std::string::npos);
+    EXPECT_NE(error_of("Film \"gbuffer\" \"string filename\" \"g.png\"\nWorldBegin\n" + std::string(kLight))
+                  .find("EXR is the only format the gbuffer film writes"),
+              std::string::npos);
+    // The rgb film has no coordinate system: an unused parameter, as in pbrt-v4.
+    EXPECT_FALSE(import("Film \"rgb\" \"string coordinatesystem\" \"world\"\nWorldBegin\n" + std::string(kLight))
+                     .warnings.empty());
 }
 
 TEST(PbrtImporter, TransformsApplyInObjectSpaceFirst) {

@@ -11,10 +11,12 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "candela/core/error.h"
 #include "candela/render/job/shard_merge.h"
+#include "candela/scene/enum_names.h"
 #include "support/test_files.h"
 
 namespace candela {
@@ -258,6 +260,36 @@ TEST(RenderJob, AnIntegratorFlagThatIgnoresMediaIsWarnedAbout) {
             return w.find("--integrator path: the scene has participating media") != std::string::npos;
         });
         EXPECT_EQ(warned, type == IntegratorType::kPath);
+    }
+}
+
+// A scene file whose own integrator ignores its media is warned about by the loader; --integrator
+// volpath withdraws that warning (it no longer holds), and --integrator path gives its own.
+TEST(RenderJob, AnIntegratorFlagReplacesTheLoadersMediaWarning) {
+    const fs::path dir = fresh_dir("job_media_warning_withdrawn");
+    const fs::path scene = dir / "fog-path.json";
+    std::ofstream(scene) << R"({"integrator": {"type": "path"}, "sampler": {"spp": 1},
+      "media": {"fog": {"type": "homogeneous", "sigma_s": 0.1}},
+      "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 40, "resolution": [8, 8],
+                 "medium": "fog"},
+      "lights": [{"type": "environment", "color": 1}]})";
+    for (std::optional<IntegratorType> type : {std::optional<IntegratorType>(), std::optional(IntegratorType::kVolPath),
+                                               std::optional(IntegratorType::kPath)}) {
+        RenderJobOptions o = small_job(dir, "fog.exr", 1);
+        o.scene = scene;
+        o.overrides.integrator = type;
+        std::vector<std::string> warnings;
+        o.message = [&](JobMessage kind, const std::string& text) {
+            if (kind == JobMessage::kWarning) warnings.push_back(text);
+        };
+        run_render_job(o);
+        const auto count = [&](const char* words) {
+            return std::count_if(warnings.begin(), warnings.end(),
+                                 [&](const std::string& w) { return w.find(words) != std::string::npos; });
+        };
+        SCOPED_TRACE(type ? integrator_type_name(*type) : "the file's");
+        EXPECT_EQ(count("the path integrator ignores them"), type ? 0 : 1);
+        EXPECT_EQ(count("--integrator path: the scene has participating media"), type == IntegratorType::kPath ? 1 : 0);
     }
 }
 

@@ -16,6 +16,7 @@
 #include "candela/camera/camera_frame.h"
 #include "candela/scene/enum_names.h"
 #include "candela/formats/json/json_cursor.h"
+#include "candela/scene/media_warning.h"
 #include "candela/scene/memory_budget.h"
 #include "candela/formats/json/scene_sections.h"
 
@@ -247,9 +248,10 @@ void read_camera(JsonCursor c, CameraSettings& camera, MemoryBudget* budget) {
     check_camera_extent(camera, c);
 }
 
-// The sensor's keys (film/sensor.h): iso and exposure_time give the imaging ratio, which must
+// The sensor's keys (film/sensor.h): sensor names its responses (cie1931 or a camera); iso and exposure_time give the imaging ratio, which must
 // stay a positive float; white_balance is 0 or a temperature; max_component_value > 0.
 void read_sensor(JsonCursor& c, FilmSettings& film) {
+    if (auto v = c.get("sensor")) film.camera_sensor = *parse_sensor(v->choice("sensor", sensor_names()));
     std::optional<JsonCursor> last;  // where an imaging ratio out of float range is reported
     if (auto v = c.get("iso")) {
         film.iso = v->number_f(Bounds::above(0));
@@ -285,6 +287,14 @@ void read_film(JsonCursor c, FilmSettings& film, const CameraSettings& camera, s
     if (auto v = c.get("filter")) film.filter = read_filter(*v);
     if (auto v = c.get("crop_window")) film.crop_window = read_crop_window(*v, camera);
     if (auto v = c.get("aovs")) film.aovs = read_aov_layers(*v);
+    if (auto v = c.get("aov_names")) {
+        static constexpr std::array<std::string_view, 2> names = {"candela", "pbrt"};
+        film.aov_names = v->choice("AOV channel naming", names) == "pbrt" ? AovNames::kPbrt : AovNames::kCandela;
+    }
+    if (auto v = c.get("aov_space")) {
+        static constexpr std::array<std::string_view, 2> spaces = {"world", "camera"};
+        film.aov_space = v->choice("AOV space", spaces) == "camera" ? AovSpace::kCamera : AovSpace::kWorld;
+    }
     if (auto v = c.get("tonemap"))
         film.tonemap = *parse_tonemap(v->choice("tone map", tonemap_names()));
     if (auto v = c.get("exposure")) film.exposure = v->number_f(Bounds::closed_open(0, 1));
@@ -345,9 +355,8 @@ void warn_if_media_ignored(Scene& scene) {
     if (!places_media(scene)) return;
     scene.warnings.push_back(
         SceneError(SourceLocation{scene.file.string(), 0, 0, ""},
-                   fmt::format("the scene has participating media but the {} integrator ignores them (it renders "
-                               "them as vacuum); use \"volpath\"",
-                               integrator_type_name(t)))
+                   fmt::format("{}{} integrator ignores them (it renders them as vacuum); use \"volpath\"",
+                               kMediaIgnoredWarning, integrator_type_name(t)))
             .formatted());
 }
 

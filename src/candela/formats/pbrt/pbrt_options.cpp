@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "candela/formats/pbrt/pbrt_import_context.h"
+#include "candela/scene/enum_names.h"
 
 namespace candela::pbrt {
 namespace {
@@ -113,14 +114,35 @@ void translate_camera(const RenderOptions& o, int width, int height, Json& camer
     camera["resolution"] = Json::array({width, height});
 }
 
+// pbrt-v4's GBufferFilm: the rgb film's image plus, in the same EXR, the first visible surface's
+// albedo, position and shading normal (in camera space by default, or world space) and the
+// pixel's variance: candela's AOV layers of the same meaning, under pbrt-v4's channel names where
+// it has the quantity (film/aov_layers.h; docs/PBRT.md lists the channels candela does not write).
+void translate_gbuffer(const Params& p, Json& film) {
+    film["aovs"] = Json::array({"albedo", "normal", "position", "variance"});
+    film["aov_names"] = "pbrt";
+    const std::string space = p.get_string("coordinatesystem").value_or("camera");
+    if (space != "camera" && space != "world")
+        p.fail(p.find("coordinatesystem"),
+               fmt::format("unknown coordinate system \"{}\" for the gbuffer film; expected \"camera\" or \"world\"",
+                           space));
+    film["aov_space"] = space;
+    // pbrt-v4 writes a gbuffer only as OpenEXR (its default file name is pbrt.exr).
+    if (auto name = p.get_string("filename"); name && !name->ends_with(".exr") && !name->ends_with(".EXR"))
+        p.fail(p.find("filename"), fmt::format("\"{}\": EXR is the only format the gbuffer film writes", *name));
+}
+
 void translate_film(const RenderOptions& o, int& width, int& height, Json& film, ImportContext& ctx) {
     width = 1280;
     height = 720;
     if (!o.film) return;
     const Params& p = *o.film;
     const std::string& d = p.directive();
-    if (d != "Film \"rgb\"")
+    if (d == "Film \"gbuffer\"") {
+        translate_gbuffer(p, film);
+    } else if (d != "Film \"rgb\"") {
         ctx.warn(p.location(), fmt::format("{}: rendered as an \"rgb\" film (linear sRGB image)", d));
+    }
     const long long w = p.int_or("xresolution", 1280), h = p.int_or("yresolution", 720);
     if (w < 1 || w > 32768) p.fail(p.find("xresolution"), "xresolution must be in 1 .. 32768");
     if (h < 1 || h > 32768) p.fail(p.find("yresolution"), "yresolution must be in 1 .. 32768");
@@ -136,9 +158,13 @@ void translate_film(const RenderOptions& o, int& width, int& height, Json& film,
     if (auto name = p.get_string("filename")) film["filename"] = *name;
     if (auto iso = p.get_float("iso")) film["iso"] = *iso;
     if (auto wb = p.get_float("whitebalance")) film["white_balance"] = *wb;
-    if (auto sensor = p.get_string("sensor"); sensor && *sensor != "cie1931")
-        ctx.warn(p.find("sensor")->location,
-                 fmt::format("sensor \"{}\" is not supported; the CIE 1931 observer is used", *sensor));
+    // pbrt-v4's PixelSensor::Create: "cie1931" or a camera it has the responses of.
+    if (auto sensor = p.get_string("sensor")) {
+        if (!parse_sensor(*sensor))
+            p.fail(p.find("sensor"),
+                   fmt::format("unknown sensor \"{}\"; expected one of: {}", *sensor, names_list(sensor_names())));
+        if (*sensor != "cie1931") film["sensor"] = *sensor;
+    }
     // pbrt-v4's RGBFilm clamps each sample's sensor values to maxcomponentvalue (infinity: none).
     if (auto m = p.get_float("maxcomponentvalue")) {
         if (!(*m > 0)) p.fail(p.find("maxcomponentvalue"), "maxcomponentvalue must be > 0");

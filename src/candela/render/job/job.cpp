@@ -165,8 +165,6 @@ RenderJobResult run_on_this_rank(const RenderJobOptions& o, [[maybe_unused]] con
     out.checkpoint_file = o.shard        ? o.outputs.front()
                           : o.checkpoint ? *o.checkpoint
                                          : fs::path(outputs.front().string() + ".ckpt");
-    if (root)
-        for (const std::string& w : scene.warnings) o.message(JobMessage::kWarning, w);
 
     RenderOverrides overrides = o.overrides;
     std::optional<ResumedFile> resumed;
@@ -177,11 +175,11 @@ RenderJobResult run_on_this_rank(const RenderJobOptions& o, [[maybe_unused]] con
 #endif
         take_checkpoint_settings(*o.resume, resumed->identity, resumed->target_spp, scene, overrides);
     }
-    const size_t loader_warnings = scene.warnings.size();
     apply_and_check(o, overrides, limit, scene);
-    // What the overrides warn of (an --integrator that ignores the scene's media).
+    // The loader's warnings and the overrides' (an --integrator that ignores the scene's media),
+    // once the overrides are applied: an --integrator may withdraw the loader's media warning.
     if (root)
-        for (size_t i = loader_warnings; i < scene.warnings.size(); ++i) o.message(JobMessage::kWarning, scene.warnings[i]);
+        for (const std::string& w : scene.warnings) o.message(JobMessage::kWarning, w);
     // Everything that must match for a checkpoint to continue this render.
     const RenderIdentity identity = render_identity(scene, scene_content_hash(scene));
 #if CANDELA_HAVE_MPI

@@ -10,6 +10,7 @@
 #include "candela/core/error.h"
 #include "candela/render/job/checkpoint.h"
 #include "candela/scene/enum_names.h"
+#include "candela/scene/media_warning.h"
 #include "candela/scene/scene.h"
 
 namespace candela {
@@ -122,7 +123,9 @@ void apply_overrides(const RenderOverrides& o, Scene& scene) {
         if (*o.integrator == IntegratorType::kBsdf && !scene.delta_lights.empty())
             bad_flag("--integrator bsdf: the bsdf integrator finds light only by hitting it, so it cannot see the "
                      "scene's point, spot or directional lights (they have no area); use path or whitted");
-        // The scene loader warns the same for a scene file's own integrator (scene_loader.cpp).
+        // The scene loader warns the same for a scene file's own integrator (scene_loader.cpp);
+        // that warning no longer holds once the integrator is another.
+        std::erase_if(scene.warnings, [](const std::string& w) { return w.find(kMediaIgnoredWarning) != std::string::npos; });
         const bool sees_media = *o.integrator == IntegratorType::kVolPath || *o.integrator == IntegratorType::kBsdf;
         if (!sees_media && places_media(scene))
             scene.warnings.push_back(fmt::format("--integrator {}: the scene has participating media, which the {} "
