@@ -87,7 +87,14 @@ class ImportContext {
     std::map<std::string, Location>& media() { return media_; }
     bool has_medium(const std::string& name) const { return media_.count(name) > 0; }
     // Whether a material of the document is pbrt-v4's "interface" (no surface, a boundary only).
+    // A material named before its definition counts as a surface; end_of_files checks that.
     bool is_interface(const std::string& material);
+
+    // NamedMaterial before its MakeNamedMaterial: pbrt-v4 looks names up once the file is read.
+    // Shapes meanwhile get a placeholder material, replaced at the end of the files.
+    static std::string later_material(const std::string& pbrt_name) { return "\x1f" + pbrt_name; }
+    static bool is_later_material(const std::string& material) { return material.starts_with('\x1f'); }
+    std::map<std::string, Location>& later_materials() { return later_; }
 
   private:
     ImportedScene& out_;
@@ -102,6 +109,7 @@ class ImportContext {
     size_t curves_count_ = 0;
     CurveRun curve_run_;
     std::map<std::string, Location> media_;
+    std::map<std::string, Location> later_;  // pbrt name -> first NamedMaterial asking for it
 };
 
 // The parts of the translation, each in its own file.

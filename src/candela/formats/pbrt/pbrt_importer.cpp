@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <optional>
 #include <vector>
@@ -311,7 +312,13 @@ class Importer final : public Target {
     void named_material(const std::string& name, const Location& at) override {
         in_world("NamedMaterial", at);
         auto it = ctx_.named_materials().find(name);
-        if (it == ctx_.named_materials().end()) fail(at, fmt::format("NamedMaterial: no material named \"{}\"", name));
+        if (it == ctx_.named_materials().end()) {
+            // pbrt-v4 keeps the name and looks it up once the file is read (contemporary-bathroom
+            // names "light" before it includes materials.pbrt): resolved in end_of_files.
+            ctx_.later_materials().try_emplace(name, at);
+            state_.material = ImportContext::later_material(name);
+            return;
+        }
         state_.material = it->second;
     }
     void light_source(const std::string& type, ParameterList params, const Location& at) override {
@@ -423,6 +430,7 @@ class Importer final : public Target {
         }
         for (const auto& [name, at] : medium_uses_)
             if (!ctx_.has_medium(name)) fail(at, fmt::format("Shape: medium \"{}\" is not defined", name));
+        resolve_later_materials();
         finish_integrator();
         if (ctx_.doc()["objects"].empty()) ctx_.doc().erase("objects");
         if (ctx_.doc()["media"].empty()) ctx_.doc().erase("media");
@@ -450,6 +458,31 @@ class Importer final : public Target {
     }
     void finish(const Params& p) {
         p.report_unused([&](const Location& at, const std::string& m) { ctx_.warn(at, m); });
+    }
+    // NamedMaterial names given before their MakeNamedMaterial, now that the files are read: the
+    // placeholders become the materials, or the first use of a name never defined is the error.
+    // Shapes took such a material for a surface; one that is an "interface" would have been
+    // translated differently, so that is an error too.
+    void resolve_later_materials() {
+        std::map<std::string, std::string> resolved;
+        for (const auto& [name, at] : ctx_.later_materials()) {
+            auto it = ctx_.named_materials().find(name);
+            if (it == ctx_.named_materials().end()) fail(at, fmt::format("NamedMaterial: no material named \"{}\"", name));
+            if (ctx_.is_interface(it->second))
+                fail(at, fmt::format("NamedMaterial \"{}\": an \"interface\" material must be defined before the "
+                                     "shapes that use it", name));
+            resolved[ImportContext::later_material(name)] = it->second;
+        }
+        if (resolved.empty()) return;
+        std::function<void(Json&)> replace = [&](Json& j) {
+            if (j.is_string()) {
+                auto it = resolved.find(j.get<std::string>());
+                if (it != resolved.end()) j = it->second;
+            } else if (j.is_structured()) {
+                for (auto& child : j) replace(child);
+            }
+        };
+        replace(ctx_.doc());
     }
     // pbrt-v4's default material: diffuse of reflectance 0.5.
     void ensure_material() {

@@ -130,6 +130,7 @@ TriangleMesh read_bilinear_mesh(const Params& p) {
 // Whether a sphere of this material shows its (u, v) or tangent frame: textured parameters,
 // normal or bump maps, anisotropic roughness. Such spheres keep pbrt's parametrization.
 bool needs_sphere_frame(const std::string& material, ImportContext& ctx) {
+    if (ImportContext::is_later_material(material)) return true;  // unknown yet: keep pbrt's frame
     const Json& m = ctx.doc()["materials"][material];
     if (m.value("type", "") == "blend") return true;
     const std::string text = m.dump();
@@ -372,8 +373,16 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
         return;
     }
     std::string material = state.material;
+    if (p.has("alpha") && ImportContext::is_later_material(material))
+        p.fail(p.find("alpha"), "alpha on a shape whose NamedMaterial is defined later in the file is not supported");
     if (p.has("alpha")) {
         Json alpha = p.number_or_texture("alpha", [&](const Parameter& t) { return ctx.texture_reference(t, true); });
+        if (state.area_light && alpha.is_number() && alpha.get<double>() <= 0 && !ctx.is_interface(material)) {
+            // pbrt-v4 masks an area light by its shape's alpha (DiffuseAreaLight::AlphaMasked): at
+            // alpha 0 the light emits nothing and the shape is invisible, so it adds nothing to the
+            // image (pbrt-v4 still spends light samples on it). candela leaves the shape out.
+            return;
+        }
         if (!(alpha.is_number() && alpha.get<double>() >= 1)) {
             if (ctx.is_interface(material))
                 ctx.warn(p.find("alpha")->location, "alpha on a shape of material \"interface\" is not supported; "
