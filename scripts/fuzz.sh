@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (scripts/build-sanitize.sh) and fuzzes each for a while:
 #   scripts/fuzz.sh [--smoke SECONDS | --long SECONDS] [TARGET...]
-# --smoke (default 30 s per target; CI runs 20 s); --long is for the recorded runs in
+# --smoke (default 30 s per target; CI runs 10 s); --long is for the recorded runs in
 # docs/RELIABILITY.md. Targets: scene obj ply hdr exr pbrt nvdb (default: all). Each target first runs
 # every input in fuzz/regressions/TARGET/ (inputs that once crashed it), then fuzzes from its
 # seeds (the repository's scenes, meshes, images and bad inputs) and its working corpus, which
