@@ -47,12 +47,28 @@ TEST(PbrtImporter, DefaultsArePbrtV4s) {
     EXPECT_EQ(d["sampler"]["spp"], 16);
     EXPECT_EQ(d["integrator"]["max_depth"], 5);
     EXPECT_EQ(d["integrator"]["spectral"], true);
+    EXPECT_EQ(d["integrator"]["light_selection"], "bvh");
     EXPECT_EQ(d["film"]["filter"]["type"], "gaussian");
     EXPECT_EQ(d["film"]["filter"]["radius"], nlohmann::ordered_json::array({1.5, 1.5}));
     EXPECT_EQ(d["film"]["filter"]["sigma"], 0.5);
     // The default material is diffuse 0.5.
     const auto& shape = d["shapes"][0];
     EXPECT_EQ(d["materials"][shape["material"].get<std::string>()]["albedo"], 0.5);
+}
+
+// pbrt-v4's path and volpath take "lightsampler" (default bvh); its bdpt, mlt and sppm, which
+// candela renders with its path tracer, choose lights by power (src/pbrt/cpu/integrators.{h,cpp}).
+TEST(PbrtImporter, LightSamplerIsPbrtV4sPerIntegrator) {
+    auto selection = [](const std::string& integrator) {
+        return import(integrator + "WorldBegin\n" + kLight).document["integrator"]["light_selection"];
+    };
+    EXPECT_EQ(selection("Integrator \"path\"\n"), "bvh");
+    EXPECT_EQ(selection("Integrator \"volpath\"\n"), "bvh");
+    EXPECT_EQ(selection("Integrator \"volpath\" \"string lightsampler\" \"power\"\n"), "power");
+    EXPECT_EQ(selection("Integrator \"path\" \"string lightsampler\" \"uniform\"\n"), "uniform");
+    EXPECT_EQ(selection("Integrator \"path\" \"string lightsampler\" \"exhaustive\"\n"), "bvh");
+    EXPECT_EQ(selection("Integrator \"bdpt\"\n"), "power");
+    EXPECT_EQ(selection("Integrator \"sppm\"\n"), "power");
 }
 
 TEST(PbrtImporter, ScreenWindowAndCropWindowPassThrough) {

@@ -270,6 +270,9 @@ bool translate_integrator(const RenderOptions& o, Json& integrator, ImportContex
     long long max_depth = 5;
     std::string type = "path";
     bool follows_media = true;  // pbrt-v4's default integrator is volpath
+    // pbrt-v4's path and volpath integrators choose lights with its BVH light sampler unless
+    // "lightsampler" says otherwise; so does an import without an Integrator directive.
+    std::string light_selection = "bvh";
     if (o.integrator) {
         const Params& p = *o.integrator;
         const std::string& d = p.directive();
@@ -293,22 +296,24 @@ bool translate_integrator(const RenderOptions& o, Json& integrator, ImportContex
         if (max_depth < 0) p.fail(p.find("maxdepth"), "maxdepth must be >= 0");
         if (p.bool_or("regularize", false))
             ctx.warn(p.find("regularize")->location, "regularize is not supported; paths are not regularized");
-        // pbrt-v4's light samplers. Its default, bvh, is left to the scene to ask for: candela
-        // imports a file without "lightsampler" with its own default, power (the same image,
-        // other noise; docs/PBRT.md), so that existing images keep their bits.
+        // pbrt-v4's light samplers; "lightsampler" is the path and volpath integrators' parameter.
         const std::string sampler = p.string_or("lightsampler", "");
         if (sampler == "bvh" || sampler == "power" || sampler == "uniform") {
-            integrator["light_selection"] = sampler;
+            light_selection = sampler;
         } else if (sampler == "exhaustive") {
             ctx.warn(p.find("lightsampler")->location,
                      "lightsampler \"exhaustive\" is rendered with \"bvh\" (the same image, other noise)");
-            integrator["light_selection"] = "bvh";
+            light_selection = "bvh";
         } else if (!sampler.empty()) {
             p.fail(p.find("lightsampler"), fmt::format("unknown lightsampler \"{}\"; expected one of: bvh, exhaustive, "
                                                        "power, uniform",
                                                        sampler));
+        } else if (pbrt_type != "path" && pbrt_type != "volpath") {
+            // bdpt, mlt and sppm choose lights by power in pbrt-v4 (their own samplers, no parameter).
+            light_selection = "power";
         }
     }
+    integrator["light_selection"] = light_selection;
     integrator["type"] = type;
     // pbrt-v4's maxdepth 0 renders emitters seen directly only; candela's max_depth counts the
     // same bounces but must be >= 1.
