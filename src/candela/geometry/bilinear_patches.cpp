@@ -10,7 +10,7 @@
 namespace candela {
 namespace {
 
-[[noreturn]] void fail(const std::string& message) { throw SceneError(SourceLocation{}, message); }
+[[noreturn]] void reject(const std::string& message) { throw SceneError(SourceLocation{}, message); }
 
 // The two triangles of a patch, as corners 0..3 = v00 v10 v01 v11 (see the header).
 constexpr std::array<int, 6> kPatchTriangles = {0, 1, 3, 0, 3, 2};
@@ -21,16 +21,16 @@ TriangleMesh bilinear_patches_to_triangles(std::span<const Vec3f> positions, std
                                            std::span<const Vec3f> normals, std::span<const Vec2f> uvs) {
     constexpr std::array<int, 4> kOnePatch = {0, 1, 2, 3};
     if (indices.empty() && positions.size() == 4) indices = kOnePatch;
-    if (indices.empty()) fail("a bilinear patch mesh needs \"indices\" (four per patch)");
+    if (indices.empty()) reject("a bilinear patch mesh needs \"indices\" (four per patch)");
     if (indices.size() % 4 != 0)
-        fail(fmt::format("a bilinear patch mesh needs four indices per patch; got {}", indices.size()));
+        reject(fmt::format("a bilinear patch mesh needs four indices per patch; got {}", indices.size()));
     if (!normals.empty() && normals.size() != positions.size())
-        fail(fmt::format("a bilinear patch mesh has {} normals for {} positions", normals.size(), positions.size()));
+        reject(fmt::format("a bilinear patch mesh has {} normals for {} positions", normals.size(), positions.size()));
     if (!uvs.empty() && uvs.size() != positions.size())
-        fail(fmt::format("a bilinear patch mesh has {} uvs for {} positions", uvs.size(), positions.size()));
+        reject(fmt::format("a bilinear patch mesh has {} uvs for {} positions", uvs.size(), positions.size()));
     for (size_t i = 0; i < indices.size(); ++i)
         if (indices[i] < 0 || static_cast<size_t>(indices[i]) >= positions.size())
-            fail(fmt::format("bilinear patch index {} (number {}) is out of range; there are {} positions",
+            reject(fmt::format("bilinear patch index {} (number {}) is out of range; there are {} positions",
                              indices[i], i + 1, positions.size()));
 
     const size_t patches = indices.size() / 4;

@@ -41,4 +41,8 @@ std::string read_file_contents(const std::filesystem::path& file) {
     return std::move(contents).str();
 }
 
+void append_to_string(void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
+}
+
 }  // namespace candela::image_formats

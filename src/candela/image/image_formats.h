@@ -57,4 +57,8 @@ void check_dimensions(const std::filesystem::path& file, int64_t width, int64_t 
 // The whole file's bytes; throws SceneError if it cannot be read.
 std::string read_file_contents(const std::filesystem::path& file);
 
+// stb_image_write's write callback for an in-memory file: appends `size` bytes at `data` to the
+// std::string at `context` (the PNG and Radiance HDR writers fill a string, then write it atomically).
+void append_to_string(void* context, void* data, int size);
+
 }  // namespace candela::image_formats

@@ -39,10 +39,6 @@ Image to_linear(const T* data, int width, int height, const auto& decode) {
     return image;
 }
 
-void append_bytes(void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
-}
-
 }  // namespace
 
 Image read_png(const fs::path& file) {
@@ -76,7 +72,8 @@ void write_png(const fs::path& file, const Image& image, const DisplayEncoding& 
     for (const Rgb& p : image.pixels)
         for (uint8_t b : to_display_bytes(p, film)) display.push_back(b);
     std::string bytes;
-    if (!stbi_write_png_to_func(append_bytes, &bytes, image.width, image.height, 3, display.data(), image.width * 3))
+    const int stride = image.width * 3;
+    if (!stbi_write_png_to_func(append_to_string, &bytes, image.width, image.height, 3, display.data(), stride))
         fail(file, "cannot encode PNG image");
     write_contents_atomically(file, bytes);
 }

@@ -142,10 +142,6 @@ class RgbeReader {
     int height_ = 0;
 };
 
-void append_bytes(void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
-}
-
 }  // namespace
 
 Image read_rgbe(const fs::path& file) {
@@ -159,7 +155,7 @@ void write_rgbe(const fs::path& file, const Image& image) {
     for (const Rgb& p : image.pixels)
         for (int c = 0; c < 3; ++c) values.push_back(std::max(p[c], 0.0f));
     std::string bytes;
-    if (!stbi_write_hdr_to_func(append_bytes, &bytes, image.width, image.height, 3, values.data()))
+    if (!stbi_write_hdr_to_func(append_to_string, &bytes, image.width, image.height, 3, values.data()))
         fail(file, "cannot encode Radiance HDR image");
     write_contents_atomically(file, bytes);
 }

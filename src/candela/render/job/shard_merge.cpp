@@ -9,6 +9,7 @@
 
 #include "candela/core/error.h"
 #include "candela/render/adaptive_sampling.h"
+#include "candela/render/job/checkpoint_codec.h"
 #include "candela/render/job/shard_part.h"
 
 namespace candela {
@@ -16,10 +17,7 @@ namespace candela {
 namespace {
 
 namespace fs = std::filesystem;
-
-[[noreturn]] void fail(const fs::path& file, const std::string& message) {
-    throw SceneError(SourceLocation{file.string(), 0, 0, ""}, message);
-}
+using checkpoint_codec::fail;  // the located error the checkpoint and part readers throw
 
 // Throws unless `part` (from `file`) belongs to the same render as `first` (from `first_file`).
 void check_same_render(const fs::path& file, const ShardPart& part, const fs::path& first_file,
