@@ -82,4 +82,12 @@ SceneError::SceneError(SourceLocation where, std::string message)
 
 std::string SceneError::formatted() const { return what(); }
 
+void fail_in_file(const std::string& file, const std::string& message) {
+    throw SceneError(SourceLocation{file, 0, 0, {}}, message);
+}
+
+void fail_in_file(const std::string& file, int line, const std::string& message) {
+    throw SceneError(SourceLocation{file, line, 0, {}}, message);
+}
+
 }  // namespace candela

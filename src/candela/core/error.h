@@ -26,6 +26,11 @@ class SceneError : public std::runtime_error {
     std::string message_;
 };
 
+// Throw a SceneError located at `file` (and `line`, for formats that have lines): how the readers
+// of mesh and volume files (PLY, NanoVDB, OpenVDB) report a bad file.
+[[noreturn]] void fail_in_file(const std::string& file, const std::string& message);
+[[noreturn]] void fail_in_file(const std::string& file, int line, const std::string& message);
+
 // A failure that is not the user's input: an internal error (CLI exit code 1).
 class RenderError : public std::runtime_error {
   public:

@@ -19,10 +19,6 @@
 namespace candela {
 namespace {
 
-[[noreturn]] void fail_at(const std::string& file, int line, const std::string& message) {
-    throw SceneError(SourceLocation{file, line, 0, {}}, message);
-}
-
 // Where the vertex attributes we read are among the vertex element's properties.
 enum VertexSlot : int { kX, kY, kZ, kNx, kNy, kNz, kU, kV, kSlotCount };
 
@@ -43,7 +39,7 @@ VertexLayout vertex_layout(const PlyElement& e, const std::string& file) {
     };
     auto assign = [&](size_t property, int slot) {
         if (e.properties[property].list_count)
-            fail_at(file, e.line,
+            fail_in_file(file, e.line,
                     fmt::format("vertex property \"{}\" must be a scalar, not a list",
                                 e.properties[property].name));
         layout.slot[property] = slot;
@@ -52,7 +48,7 @@ VertexLayout vertex_layout(const PlyElement& e, const std::string& file) {
         const std::string_view name = std::array{"x", "y", "z"}[static_cast<size_t>(slot - kX)];
         const size_t p = find(name);
         if (p == kMissing)
-            fail_at(file, e.line, fmt::format("the vertex element has no \"{}\" property", name));
+            fail_in_file(file, e.line, fmt::format("the vertex element has no \"{}\" property", name));
         assign(p, slot);
     }
     const std::array<size_t, 3> normal = {find("nx"), find("ny"), find("nz")};
@@ -62,7 +58,7 @@ VertexLayout vertex_layout(const PlyElement& e, const std::string& file) {
         for (size_t i = 0; i < 3; ++i) assign(normal[i], kNx + static_cast<int>(i));
         layout.has_normals = true;
     } else if (normal_parts > 0) {
-        fail_at(file, e.line, "the vertex element has only some of the normal properties nx, ny, nz");
+        fail_in_file(file, e.line, "the vertex element has only some of the normal properties nx, ny, nz");
     }
     // A lone "u" or "t" may be something else (a time, say), so only a complete pair is a uv.
     constexpr std::array<std::array<std::string_view, 2>, 4> kUvNames = {
@@ -89,15 +85,15 @@ FaceLayout face_layout(const PlyElement& e, const std::string& file) {
             const PlyProperty& p = e.properties[i];
             if (p.name != name) continue;
             if (!p.list_count)
-                fail_at(file, e.line, fmt::format("face property \"{}\" must be a list", p.name));
+                fail_in_file(file, e.line, fmt::format("face property \"{}\" must be a list", p.name));
             if (!is_integer(p.type))
-                fail_at(file, e.line,
+                fail_in_file(file, e.line,
                         fmt::format("face property \"{}\" must list integers, got {}", p.name,
                                     type_name(p.type)));
             return FaceLayout{i};
         }
     }
-    fail_at(file, e.line, "the face element has no \"vertex_indices\" (or \"vertex_index\") list");
+    fail_in_file(file, e.line, "the face element has no \"vertex_indices\" (or \"vertex_index\") list");
 }
 
 // Names the record being read, for errors.
@@ -179,7 +175,7 @@ class BinaryCursor {
         p_ += static_cast<size_t>(count) * record_bytes;
     }
     [[noreturn]] void fail(const std::string& message) const {
-        fail_at(file_, 0,
+        fail_in_file(file_, 0,
                 context_.describe(message) +
                     fmt::format(" (at byte {} of the data after the header)", p_ - begin_));
     }
@@ -242,7 +238,7 @@ class AsciiCursor {
         for (int64_t i = 0; i < n; ++i) word();
     }
     [[noreturn]] void fail(const std::string& message) const {
-        fail_at(file_, line_, context_.describe(message));
+        fail_in_file(file_, line_, context_.describe(message));
     }
 
   private:
@@ -384,7 +380,7 @@ TriangleMesh read_data(Cursor& c, const PlyHeader& header, const PlyElement& ver
 const PlyElement& find_element(const PlyHeader& header, std::string_view name, const std::string& file) {
     for (const PlyElement& e : header.elements)
         if (e.name == name) return e;
-    fail_at(file, header.end_line, fmt::format("the PLY header declares no \"{}\" element", name));
+    fail_in_file(file, header.end_line, fmt::format("the PLY header declares no \"{}\" element", name));
 }
 
 // What the header says and how the vertex and face records will be read.
@@ -402,7 +398,7 @@ struct PlyPlan {
         vertex = vertex_layout(*vertices, file_name);
         face = face_layout(*faces, file_name);
         if (vertices->count > std::numeric_limits<uint32_t>::max())
-            fail_at(file_name, vertices->line,
+            fail_in_file(file_name, vertices->line,
                     fmt::format("{} vertices are more than the 2^32 - 1 a mesh can index", vertices->count));
     }
     PlyPlan(const PlyPlan&) = delete;
@@ -411,7 +407,7 @@ struct PlyPlan {
     // Embree numbers triangles with 32 bits, and every face makes at least one.
     void check_face_count(const std::string& file_name) const {
         if (faces->count > std::numeric_limits<uint32_t>::max())
-            fail_at(file_name, faces->line,
+            fail_in_file(file_name, faces->line,
                     fmt::format("{} faces are more than the 2^32 - 1 triangles a mesh can index", faces->count));
     }
     MeshSize size() const { return MeshSize{vertices->count, faces->count, 0, vertex.has_normals, vertex.has_uvs}; }

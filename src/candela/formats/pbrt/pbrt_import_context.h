@@ -137,6 +137,9 @@ std::string translate_material(const std::string& wanted_name, const std::string
 // A copy of material `name` with pbrt's shape `alpha` (a number or {"texture": ...}).
 std::string material_with_alpha(const std::string& name, const Json& alpha, ImportContext& ctx);
 
+// A point or vector as the JSON scene document writes it, [x, y, z].
+inline Json vec_json(const Vec3d& v) { return Json::array({v.x, v.y, v.z}); }
+
 // pbrt_shapes.cpp: a Shape into JSON shapes appended to `shapes` (usually the document's).
 void translate_shape(const std::string& type, const Params& params, const GraphicsState& state, Json& shapes,
                      const std::string& shapes_pointer, ImportContext& ctx);

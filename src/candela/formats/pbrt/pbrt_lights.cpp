@@ -10,8 +10,6 @@
 namespace candela::pbrt {
 namespace {
 
-Json vec_json(const Vec3d& v) { return Json::array({v.x, v.y, v.z}); }
-
 Json light_colour(const Params& p, const char* name) {
     Json c = p.colour(name, [&](const Parameter& t) -> std::string {
         fail(t.location, fmt::format("{}: \"{}\" cannot be a texture", p.directive(), name));

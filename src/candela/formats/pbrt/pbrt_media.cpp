@@ -13,8 +13,6 @@
 namespace candela::pbrt {
 namespace {
 
-Json vec_json(const Vec3d& v) { return Json::array({v.x, v.y, v.z}); }
-
 // A medium's coefficient or emission: a number, [r, g, b], a spectrum or a blackbody, as the
 // importer writes colours for materials. A medium cannot read a texture.
 Json medium_colour(const Params& p, const char* name) {

@@ -12,8 +12,6 @@
 namespace candela::pbrt {
 namespace {
 
-Json vec_json(const Vec3d& v) { return Json::array({v.x, v.y, v.z}); }
-
 // The type a directive names: "perspective" of `Camera "perspective"`.
 std::string directive_type(const Params& p) {
     const std::string& d = p.directive();

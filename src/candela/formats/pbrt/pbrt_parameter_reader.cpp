@@ -61,16 +61,6 @@ bool is_bool_word(const Token& t) {
 
 std::string quote_text(std::string_view s) { return "\"" + std::string(s) + "\""; }
 
-std::string describe_token(const Token& t) {
-    switch (t.kind) {
-        case Token::Kind::Open: return "[";
-        case Token::Kind::Close: return "]";
-        case Token::Kind::String: return "the string " + quote_text(t.text);
-        case Token::Kind::Word: break;
-    }
-    return quote_text(t.text);
-}
-
 // pbrt-v4's parseInt: an optional sign and decimal digits, within 32 bits.
 bool is_int32(std::string_view s) {
     const bool negative = !s.empty() && s[0] == '-';
@@ -175,6 +165,16 @@ class ValueReader {
 };
 
 }  // namespace
+
+std::string describe_token(const Token& t) {
+    switch (t.kind) {
+        case Token::Kind::Open: return "[";
+        case Token::Kind::Close: return "]";
+        case Token::Kind::String: return "the string " + quote_text(t.text);
+        case Token::Kind::Word: break;
+    }
+    return quote_text(t.text);
+}
 
 double parse_number(const Token& word, std::string_view context) {
     std::string_view s = word.text;

@@ -16,6 +16,9 @@ namespace candela::pbrt {
 // the token, the message starting with `context`.
 double parse_number(const Token& word, std::string_view context);
 
+// A token as an error message names it: "[", "]", the string "...", or the quoted word.
+std::string describe_token(const Token& t);
+
 // Every parameter that follows a directive: the parameters end at the first token that is not a
 // quoted string.
 ParameterList read_parameters(TokenStream& tokens);

@@ -11,16 +11,6 @@ namespace candela::pbrt {
 
 namespace {
 
-std::string describe_token(const Token& t) {
-    switch (t.kind) {
-        case Token::Kind::Open: return "[";
-        case Token::Kind::Close: return "]";
-        case Token::Kind::String: return "the string \"" + t.text + "\"";
-        case Token::Kind::Word: break;
-    }
-    return "\"" + t.text + "\"";
-}
-
 // Reads directives one after the other and hands each to the target: a loop, never recursion,
 // so that a million nested AttributeBegin cost no stack (the target keeps the nesting).
 class Parser {

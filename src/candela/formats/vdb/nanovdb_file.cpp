@@ -18,10 +18,6 @@ namespace {
 
 namespace L = nanovdb_layout;
 
-[[noreturn]] void fail(const std::string& file, const std::string& message) {
-    throw SceneError(SourceLocation{file, 0, 0, {}}, message);
-}
-
 uint64_t byte_swapped(uint64_t v) {
     uint64_t r = 0;
     for (int i = 0; i < 8; ++i) r = (r << 8) | ((v >> (8 * i)) & 0xff);
@@ -31,13 +27,14 @@ uint64_t byte_swapped(uint64_t v) {
 // Reads `count` bytes at `offset` of the file, or fails saying what was expected there.
 std::string read_at(NanoVdbFile& f, uint64_t offset, uint64_t count, std::string_view what) {
     if (offset > f.size || count > f.size - offset)
-        fail(f.file, fmt::format("truncated NanoVDB file: expected {} ({} bytes) at byte {}, but the file has {} bytes",
+        fail_in_file(f.file,
+                     fmt::format("truncated NanoVDB file: expected {} ({} bytes) at byte {}, but the file has {} bytes",
                                  what, count, offset, f.size));
     std::string bytes(count, '\0');
     f.in.clear();
     f.in.seekg(std::streamoff(offset));
     f.in.read(bytes.data(), std::streamsize(count));
-    if (!f.in) fail(f.file, fmt::format("cannot read {} at byte {}: {}", what, offset, std::strerror(errno)));
+    if (!f.in) fail_in_file(f.file, fmt::format("cannot read {} at byte {}: {}", what, offset, std::strerror(errno)));
     return bytes;
 }
 
@@ -47,9 +44,9 @@ std::string c_string(std::string_view bytes) { return std::string(bytes.substr(0
 void check_version(const NanoVdbFile& f, uint32_t version, uint64_t offset) {
     const uint32_t major = version >> 21, minor = (version >> 10) & 0x7ff, patch = version & 0x3ff;
     if (major != L::kMajorVersion)
-        fail(f.file, fmt::format("NanoVDB version {}.{}.{} at byte {}; candela reads version {}.x (the file "
-                                 "format of NanoVDB 32.3 to 32.9)",
-                                 major, minor, patch, offset, L::kMajorVersion));
+        fail_in_file(f.file, fmt::format("NanoVDB version {}.{}.{} at byte {}; candela reads version {}.x (the file "
+                                         "format of NanoVDB 32.3 to 32.9)",
+                                         major, minor, patch, offset, L::kMajorVersion));
 }
 
 // A segment at `offset`: its header, metadata and names; returns where the next one starts.
@@ -79,11 +76,13 @@ uint64_t read_segment(NanoVdbFile& f, uint64_t offset) {
     // The grids' buffers follow the metadata, in the same order.
     for (NanoVdbGridEntry& e : entries) {
         if (at > f.size || e.file_size > f.size - at)
-            fail(f.file,
-                 fmt::format("truncated NanoVDB file: grid \"{}\" needs {} bytes at byte {}, but the file has {} bytes",
-                             e.name, e.file_size, at, f.size));
+            fail_in_file(
+                f.file,
+                fmt::format("truncated NanoVDB file: grid \"{}\" needs {} bytes at byte {}, but the file has {} bytes",
+                            e.name, e.file_size, at, f.size));
         if (e.codec == L::kCodecNone && e.file_size != e.grid_size)
-            fail(f.file, fmt::format("corrupt NanoVDB file: grid \"{}\" is uncompressed but takes {} bytes in the file "
+            fail_in_file(f.file,
+                         fmt::format("corrupt NanoVDB file: grid \"{}\" is uncompressed but takes {} bytes in the file "
                                      "and {} in memory",
                                      e.name, e.file_size, e.grid_size));
         e.offset = at;
@@ -104,9 +103,10 @@ uint64_t read_raw_grid(NanoVdbFile& f, uint64_t offset) {
     e.name = c_string(g.view(L::kGridName, L::kGridNameSize));
     e.offset = offset;
     if (e.grid_size < L::kGridDataSize || e.grid_size > f.size - offset)
-        fail(f.file,
-             fmt::format("truncated NanoVDB file: grid \"{}\" at byte {} says it has {} bytes, but the file has {}",
-                         e.name, offset, e.grid_size, f.size));
+        fail_in_file(
+            f.file,
+            fmt::format("truncated NanoVDB file: grid \"{}\" at byte {} says it has {} bytes, but the file has {}",
+                        e.name, offset, e.grid_size, f.size));
     f.grids.push_back(std::move(e));
     return offset + f.grids.back().grid_size;
 }
@@ -117,12 +117,12 @@ NanoVdbFile open_nanovdb_file(const std::filesystem::path& path) {
     NanoVdbFile f;
     f.file = path.string();
     f.in.open(path, std::ios::binary);
-    if (!f.in) fail(f.file, fmt::format("cannot open NanoVDB file: {}", std::strerror(errno)));
+    if (!f.in) fail_in_file(f.file, fmt::format("cannot open NanoVDB file: {}", std::strerror(errno)));
     f.in.seekg(0, std::ios::end);
     const std::streamoff end = f.in.tellg();
-    if (end < 0) fail(f.file, "cannot read NanoVDB file: it has no size");
+    if (end < 0) fail_in_file(f.file, "cannot read NanoVDB file: it has no size");
     f.size = uint64_t(end);
-    if (f.size == 0) fail(f.file, "empty file; expected a NanoVDB file (.nvdb)");
+    if (f.size == 0) fail_in_file(f.file, "empty file; expected a NanoVDB file (.nvdb)");
 
     uint64_t offset = 0;
     while (offset < f.size) {
@@ -140,11 +140,12 @@ NanoVdbFile open_nanovdb_file(const std::filesystem::path& path) {
             offset = read_segment(f, offset);
         } else if (byte_swapped(magic) == L::kMagicFile || byte_swapped(magic) == L::kMagicFileOld ||
                    byte_swapped(magic) == L::kMagicGrid) {
-            fail(f.file, "big-endian NanoVDB file; candela reads little-endian ones only");
+            fail_in_file(f.file, "big-endian NanoVDB file; candela reads little-endian ones only");
         } else if (offset == 0 && uint32_t(magic) == L::kOpenVdbMagic) {
-            fail(f.file, "this is an OpenVDB file, not a NanoVDB one; name it .vdb to read it as OpenVDB");
+            fail_in_file(f.file, "this is an OpenVDB file, not a NanoVDB one; name it .vdb to read it as OpenVDB");
         } else {
-            fail(f.file, fmt::format("not a NanoVDB file: expected the magic number \"NanoVDB0\" or \"NanoVDB2\" at "
+            fail_in_file(f.file,
+                         fmt::format("not a NanoVDB file: expected the magic number \"NanoVDB0\" or \"NanoVDB2\" at "
                                      "byte {}",
                                      offset));
         }

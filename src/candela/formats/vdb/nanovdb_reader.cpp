@@ -14,10 +14,6 @@
 namespace candela {
 namespace {
 
-[[noreturn]] void fail(const std::string& file, const std::string& message) {
-    throw SceneError(SourceLocation{file, 0, 0, {}}, message);
-}
-
 std::string quoted_names(const std::vector<NanoVdbGridEntry>& grids) {
     std::string names;
     for (const NanoVdbGridEntry& g : grids) names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", g.name);
@@ -36,18 +32,20 @@ VolumeGrid read_nanovdb_grid(const std::filesystem::path& path, std::string_view
         }
     if (!entry) {
         if (f.grids.empty())
-            fail(f.file, fmt::format("no grid named \"{}\": the NanoVDB file has no grids", grid_name));
-        fail(f.file, fmt::format("no grid named \"{}\"; the NanoVDB file has: {}", grid_name, quoted_names(f.grids)));
+            fail_in_file(f.file, fmt::format("no grid named \"{}\": the NanoVDB file has no grids", grid_name));
+        fail_in_file(f.file,
+                     fmt::format("no grid named \"{}\"; the NanoVDB file has: {}", grid_name, quoted_names(f.grids)));
     }
     if (entry->codec != nanovdb_layout::kCodecNone)
-        fail(f.file, fmt::format("grid \"{}\" is compressed ({}); candela reads uncompressed NanoVDB files only: write "
+        fail_in_file(f.file,
+                     fmt::format("grid \"{}\" is compressed ({}); candela reads uncompressed NanoVDB files only: write "
                                  "it again with codec none (nanovdb::io::Codec::NONE)",
                                  entry->name, nanovdb_codec_name(entry->codec)));
     if (entry->grid_type != nanovdb_layout::kGridTypeFloat)
-        fail(f.file, fmt::format("grid \"{}\" holds {} values; candela reads float grids only", entry->name,
-                                 nanovdb_type_name(entry->grid_type)));
+        fail_in_file(f.file, fmt::format("grid \"{}\" holds {} values; candela reads float grids only", entry->name,
+                                         nanovdb_type_name(entry->grid_type)));
     if (auto refused = budget.charge(0, fmt::format("reading NanoVDB grid \"{}\"", entry->name), entry->grid_size))
-        fail(f.file, *refused);
+        fail_in_file(f.file, *refused);
     const std::string bytes = read_nanovdb_grid_bytes(f, *entry);
     return decode_nanovdb_float_grid(bytes, f.file, entry->name, budget);
 }

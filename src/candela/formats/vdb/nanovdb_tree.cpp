@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "candela/core/error.h"
+#include "candela/core/saturating.h"
 #include "candela/formats/vdb/nanovdb_layout.h"
 #include "candela/scene/memory_budget.h"
 
@@ -191,11 +192,6 @@ class TreeWalker {
     uint32_t table_size_ = 0;
     std::vector<uint8_t> seen_[3];
 };
-
-uint64_t saturating_product(uint64_t a, uint64_t b) {
-    uint64_t r;
-    return __builtin_mul_overflow(a, b, &r) ? UINT64_MAX : r;
-}
 
 void read_map(const L::Bytes& b, VolumeGrid& grid, const TreeWalker& walker) {
     for (int r = 0; r < 3; ++r) {

@@ -16,27 +16,17 @@
 #include <mutex>
 
 #include "candela/core/error.h"
+#include "candela/core/saturating.h"
 #include "candela/scene/memory_budget.h"
 
 namespace candela {
 namespace {
-
-[[noreturn]] void fail(const std::string& file, const std::string& message) {
-    throw SceneError(SourceLocation{file, 0, 0, {}}, message);
-}
 
 // openvdb::initialize registers the grid and map types; once per process.
 void initialize_openvdb() {
     static std::once_flag once;
     std::call_once(once, [] { openvdb::initialize(); });
 }
-
-uint64_t saturating_product(uint64_t a, uint64_t b) {
-    uint64_t r;
-    return __builtin_mul_overflow(a, b, &r) ? UINT64_MAX : r;
-}
-
-uint64_t saturating_sum(uint64_t a, uint64_t b) { return a > UINT64_MAX - b ? UINT64_MAX : a + b; }
 
 // Bytes of the dense block of `box`, saturating.
 uint64_t dense_bytes(const openvdb::CoordBBox& box) {
@@ -148,7 +138,7 @@ auto with_file(const std::filesystem::path& path, Body&& body) {
     initialize_openvdb();
     const std::string name = path.string();
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail(name, "cannot open OpenVDB file: no such file");
+    if (!std::filesystem::is_regular_file(path, ec)) fail_in_file(name, "cannot open OpenVDB file: no such file");
     VdbPrecheck(path, name).run();
     try {
         openvdb::io::File file(name);
@@ -157,16 +147,17 @@ auto with_file(const std::filesystem::path& path, Body&& body) {
     } catch (const SceneError&) {
         throw;
     } catch (const std::exception& e) {
-        fail(name, fmt::format("cannot read OpenVDB file: {}", printable(e.what())));
+        fail_in_file(name, fmt::format("cannot read OpenVDB file: {}", printable(e.what())));
     }
 }
 
 void read_map(const openvdb::FloatGrid& grid, const std::string& file, VolumeGrid& out) {
     const openvdb::math::Transform& transform = grid.transform();
     if (!transform.isLinear())
-        fail(file, fmt::format("grid \"{}\" has a non-linear transform ({}); candela reads grids with an affine "
-                               "index-to-world map only",
-                               out.name, transform.mapType()));
+        fail_in_file(file,
+                     fmt::format("grid \"{}\" has a non-linear transform ({}); candela reads grids with an affine "
+                                 "index-to-world map only",
+                                 out.name, transform.mapType()));
     // OpenVDB multiplies row vectors: world = (i, j, k, 1) * M, so our rows are M's columns.
     const openvdb::Mat4d m = transform.baseMap()->getAffineMap()->getMat4();
     for (int r = 0; r < 3; ++r)
@@ -196,13 +187,13 @@ VolumeGrid read_openvdb_grid(const std::filesystem::path& path, std::string_view
             std::string names;
             for (const std::string& n : names_in(file)) names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", n);
             if (names.empty())
-                fail(file_name, fmt::format("no grid named \"{}\": the OpenVDB file has no grids", name));
-            fail(file_name, fmt::format("no grid named \"{}\"; the OpenVDB file has: {}", name, names));
+                fail_in_file(file_name, fmt::format("no grid named \"{}\": the OpenVDB file has no grids", name));
+            fail_in_file(file_name, fmt::format("no grid named \"{}\"; the OpenVDB file has: {}", name, names));
         }
         const openvdb::GridBase::Ptr meta = file.readGridMetadata(name);
         if (!meta->isType<openvdb::FloatGrid>())
-            fail(file_name,
-                 fmt::format("grid \"{}\" holds {} values; candela reads float grids only", name, meta->valueType()));
+            fail_in_file(file_name, fmt::format("grid \"{}\" holds {} values; candela reads float grids only", name,
+                                                meta->valueType()));
         const std::string what = fmt::format("volume grid \"{}\"", name);
         // What the file's metadata says, checked before the tree is read.
         const auto bbox_min = meta->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MIN);
@@ -213,29 +204,29 @@ VolumeGrid read_openvdb_grid(const std::filesystem::path& path, std::string_view
             const uint64_t tree_bytes = mem_bytes && mem_bytes->value() > 0 ? uint64_t(mem_bytes->value()) : 0;
             if (!box.empty())
                 if (auto refused = budget.charge(0, what, saturating_sum(dense_bytes(box), tree_bytes)))
-                    fail(file_name, *refused);
+                    fail_in_file(file_name, *refused);
         }
 
         const auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid(name));
-        if (!grid) fail(file_name, fmt::format("grid \"{}\" could not be read as a float grid", name));
+        if (!grid) fail_in_file(file_name, fmt::format("grid \"{}\" could not be read as a float grid", name));
         VolumeGrid out;
         out.name = name;
         out.background = grid->background();
         if (!std::isfinite(out.background))
-            fail(file_name, fmt::format("grid \"{}\": the background is not finite", name));
+            fail_in_file(file_name, fmt::format("grid \"{}\": the background is not finite", name));
         read_map(*grid, file_name, out);
         const openvdb::CoordBBox box = grid->evalActiveVoxelBoundingBox();
         if (box.empty()) return out;
         const openvdb::Coord dim = box.dim();
         for (int a = 0; a < 3; ++a)
             if (int64_t(box.max()[a]) - box.min()[a] + 1 > INT_MAX)
-                fail(file_name,
-                     fmt::format("grid \"{}\" is too wide along {}; candela reads grids up to {} voxels wide", name,
-                                 "xyz"[a], INT_MAX));
+                fail_in_file(file_name,
+                             fmt::format("grid \"{}\" is too wide along {}; candela reads grids up to {} voxels wide",
+                                         name, "xyz"[a], INT_MAX));
         if (auto refused =
                 budget.charge(dense_bytes(box), fmt::format("{} ({}x{}x{} voxels)", what, dim.x(), dim.y(), dim.z()),
                               grid->memUsage()))
-            fail(file_name, *refused);
+            fail_in_file(file_name, *refused);
         out.index_min = Vec3<int>(box.min().x(), box.min().y(), box.min().z());
         out.nx = dim.x();
         out.ny = dim.y();
@@ -248,8 +239,8 @@ VolumeGrid read_openvdb_grid(const std::filesystem::path& path, std::string_view
                 for (int x = box.min().x(); x <= box.max().x(); ++x) {
                     const float v = accessor.getValue(openvdb::Coord(x, y, z));
                     if (!std::isfinite(v))
-                        fail(file_name,
-                             fmt::format("grid \"{}\": voxel ({}, {}, {}) is not a finite number", name, x, y, z));
+                        fail_in_file(file_name, fmt::format("grid \"{}\": voxel ({}, {}, {}) is not a finite number",
+                                                            name, x, y, z));
                     out.values[n++] = v;
                 }
         compute_world_bounds(out);
