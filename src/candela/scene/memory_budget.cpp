@@ -11,6 +11,7 @@
 #include <string>
 #include <type_traits>
 
+#include "candela/core/saturating.h"
 #include "candela/film/film.h"
 #include "candela/geometry/accelerator.h"
 #include "candela/media/medium.h"
@@ -52,15 +53,9 @@ constexpr uint64_t kObjCornerLoadBytes = 12 + 64;
 // (weights and CDF, 4 + 4, and row overhead rounded up).
 constexpr uint64_t kEnvironmentBytesPerTexel = 12 + 12 + 12;
 
-// a * b, saturating instead of wrapping: a header may claim any count.
-uint64_t times(uint64_t a, uint64_t b) {
-    uint64_t product = 0;
-    return __builtin_mul_overflow(a, b, &product) ? UINT64_MAX : product;
-}
-
-uint64_t plus(uint64_t a, uint64_t b) {
-    uint64_t sum = 0;
-    return __builtin_add_overflow(a, b, &sum) ? UINT64_MAX : sum;
+// The pixels (or texels) of a width x height image, saturating; negative sizes count as 0.
+uint64_t pixel_count(int width, int height) {
+    return saturating_product(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0)));
 }
 
 // A number from a one-line file such as /sys/fs/cgroup/memory.max ("max" means none).
@@ -86,7 +81,7 @@ uint64_t virtual_size_bytes() {
 }  // namespace
 
 MemoryLimit MemoryLimit::of_this_process() {
-    MemoryLimit limit{times(uint64_t(sysconf(_SC_PHYS_PAGES)), uint64_t(sysconf(_SC_PAGESIZE))),
+    MemoryLimit limit{saturating_product(uint64_t(sysconf(_SC_PHYS_PAGES)), uint64_t(sysconf(_SC_PAGESIZE))),
                       "this machine has"};
     auto lower = [&](std::optional<uint64_t> candidate, const char* why) {
         if (candidate && *candidate < limit.bytes) limit = {*candidate, why};
@@ -104,48 +99,49 @@ MemoryLimit MemoryLimit::of_this_process() {
 }
 
 uint64_t film_memory_bytes(int width, int height) {
-    return times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))), kFilmBytesPerPixel);
+    return saturating_product(pixel_count(width, height), kFilmBytesPerPixel);
 }
 
 uint64_t aov_memory_bytes(int width, int height, AovLayers aovs) {
     int layers = 0;
     for (int l = 0; l < kAovLayerCount; ++l) layers += aovs.has(AovLayer(l)) ? 1 : 0;
     const uint64_t per_pixel = uint64_t(aovs.value_count()) * (8 + 8) + uint64_t(layers) * (12 + 12);
-    return times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))), per_pixel);
+    return saturating_product(pixel_count(width, height), per_pixel);
 }
 
 uint64_t film_statistics_memory_bytes(int width, int height) {
-    return times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))), kFilmStatisticsBytesPerPixel);
+    return saturating_product(pixel_count(width, height), kFilmStatisticsBytesPerPixel);
 }
 
 uint64_t mesh_memory_bytes(uint64_t vertices, uint64_t triangles, bool normals, bool uvs) {
     const uint64_t per_vertex = kPositionBytes + (normals ? kNormalBytes : 0) + (uvs ? kUvBytes : 0);
     const uint64_t per_triangle = kTriangleBytes + (triangles <= kMaxTrianglesWithNormalTable ? kNormalTableBytes : 0);
-    return plus(times(vertices, per_vertex), times(triangles, per_triangle));
+    return saturating_sum(saturating_product(vertices, per_vertex), saturating_product(triangles, per_triangle));
 }
 
 uint64_t instance_memory_bytes() { return kInstanceBytes; }
 
 uint64_t mesh_loading_memory_bytes(uint64_t vertices, uint64_t corners) {
-    return plus(times(vertices, kObjVertexLoadBytes), times(corners, kObjCornerLoadBytes));
+    return saturating_sum(saturating_product(vertices, kObjVertexLoadBytes),
+                          saturating_product(corners, kObjCornerLoadBytes));
 }
 
 uint64_t environment_memory_bytes(int width, int height) {
-    return times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))), kEnvironmentBytesPerTexel);
+    return saturating_product(pixel_count(width, height), kEnvironmentBytesPerTexel);
 }
 
 uint64_t texture_memory_bytes(int width, int height, int channels, int bytes_per_channel) {
-    const uint64_t texels = times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0)));
+    const uint64_t texels = pixel_count(width, height);
     const uint64_t per_texel = uint64_t(std::max(channels, 0)) * uint64_t(std::max(bytes_per_channel, 0));
-    return plus(times(texels, per_texel), sizeof(TextureImage::byte_values));
+    return saturating_sum(saturating_product(texels, per_texel), sizeof(TextureImage::byte_values));
 }
 
 uint64_t texture_loading_memory_bytes(uint64_t file_bytes, int width, int height, int channels,
                                       int bytes_per_channel) {
     // stb decodes 16-bit files to 2 bytes per value, which are then decoded to floats.
     const int decoded_bytes = bytes_per_channel == 1 ? 1 : 2;
-    return plus(file_bytes, times(times(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0))),
-                                  uint64_t(std::max(channels, 0)) * uint64_t(decoded_bytes)));
+    return saturating_sum(file_bytes, saturating_product(pixel_count(width, height),
+                                                         uint64_t(std::max(channels, 0)) * uint64_t(decoded_bytes)));
 }
 
 uint64_t grid_medium_memory_bytes(uint64_t voxels, int float_grids, int rgb_grids, bool blackbody) {
@@ -154,7 +150,7 @@ uint64_t grid_medium_memory_bytes(uint64_t voxels, int float_grids, int rgb_grid
     constexpr uint64_t kMajorants = 2 * 16 * 16 * 16 * sizeof(float);
     constexpr uint64_t kBlackbody = uint64_t(BlackbodyRgbTable::kSize) * 3 * sizeof(float);
     const uint64_t per_voxel = uint64_t(float_grids) * sizeof(float) + uint64_t(rgb_grids) * (sizeof(Rgb) + sizeof(RgbSpectrum));
-    return plus(times(voxels, per_voxel), kMajorants + (blackbody ? kBlackbody : 0));
+    return saturating_sum(saturating_product(voxels, per_voxel), kMajorants + (blackbody ? kBlackbody : 0));
 }
 
 namespace {
@@ -181,18 +177,18 @@ uint64_t medium_memory_bytes(const Medium& medium) {
 
 uint64_t scene_memory_bytes(const Scene& scene, bool statistics) {
     uint64_t bytes = film_memory_bytes(scene.camera.width, scene.camera.height);
-    bytes = plus(bytes, aov_memory_bytes(scene.camera.width, scene.camera.height, scene.film.aovs));
+    bytes = saturating_sum(bytes, aov_memory_bytes(scene.camera.width, scene.camera.height, scene.film.aovs));
     if (statistics || scene.sampler.adaptive || film_needs_statistics(scene.film.aovs))
-        bytes = plus(bytes, film_statistics_memory_bytes(scene.camera.width, scene.camera.height));
+        bytes = saturating_sum(bytes, film_statistics_memory_bytes(scene.camera.width, scene.camera.height));
     for (const TriangleMesh& m : scene.meshes)
-        bytes = plus(bytes, mesh_memory_bytes(m.positions.size(), m.triangle_count(), !m.normals.empty(),
-                                              !m.uvs.empty()));
-    bytes = plus(bytes, times(scene.instances.size(), instance_memory_bytes()));
+        bytes = saturating_sum(
+            bytes, mesh_memory_bytes(m.positions.size(), m.triangle_count(), !m.normals.empty(), !m.uvs.empty()));
+    bytes = saturating_sum(bytes, saturating_product(scene.instances.size(), instance_memory_bytes()));
     if (scene.environment)
-        bytes = plus(bytes, environment_memory_bytes(scene.environment->radiance.width,
-                                                     scene.environment->radiance.height));
-    for (const Medium& m : scene.media) bytes = plus(bytes, medium_memory_bytes(m));
-    return plus(bytes, scene.textures.image_memory_bytes());
+        bytes = saturating_sum(
+            bytes, environment_memory_bytes(scene.environment->radiance.width, scene.environment->radiance.height));
+    for (const Medium& m : scene.media) bytes = saturating_sum(bytes, medium_memory_bytes(m));
+    return saturating_sum(bytes, scene.textures.image_memory_bytes());
 }
 
 std::string format_bytes(uint64_t bytes) {
@@ -242,10 +238,10 @@ std::optional<std::string> memory_refusal(const Scene& scene, const MemoryLimit&
 }
 
 std::optional<std::string> MemoryBudget::charge(uint64_t bytes, std::string_view what, uint64_t transient) {
-    const uint64_t needed = plus(bytes, transient);
-    const uint64_t total = plus(used_, needed);
+    const uint64_t needed = saturating_sum(bytes, transient);
+    const uint64_t total = saturating_sum(used_, needed);
     if (total <= limit_.bytes) {
-        used_ = plus(used_, bytes);
+        used_ = saturating_sum(used_, bytes);
         return std::nullopt;
     }
     // The total only when it says more than the part.

@@ -373,9 +373,10 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
         return;
     }
     std::string material = state.material;
-    if (p.has("alpha") && ImportContext::is_later_material(material))
-        p.fail(p.find("alpha"), "alpha on a shape whose NamedMaterial is defined later in the file is not supported");
     if (p.has("alpha")) {
+        if (ImportContext::is_later_material(material))
+            p.fail(p.find("alpha"),
+                   "alpha on a shape whose NamedMaterial is defined later in the file is not supported");
         Json alpha = p.number_or_texture("alpha", [&](const Parameter& t) { return ctx.texture_reference(t, true); });
         if (state.area_light && alpha.is_number() && alpha.get<double>() <= 0 && !ctx.is_interface(material)) {
             // pbrt-v4 masks an area light by its shape's alpha (DiffuseAreaLight::AlphaMasked): at
