@@ -9,6 +9,19 @@
 
 namespace candela::fuzz {
 
+// How many geometries of a shape kind the scene holds. A switch without a default, so that a
+// new kind is a compiler warning here rather than a false "undefined geometry" report.
+inline size_t geometry_count(const Scene& scene, ShapeKind kind) {
+    switch (kind) {
+    case ShapeKind::kMesh: return scene.meshes.size();
+    case ShapeKind::kSphere: return scene.spheres.size();
+    case ShapeKind::kDisk: return scene.disks.size();
+    case ShapeKind::kCurves: return scene.curves.size();
+    case ShapeKind::kQuadric: return scene.quadrics.size();
+    }
+    return 0;
+}
+
 // What the renderer indexes without checking: every reference is in range, every mesh valid,
 // the camera and sampler usable.
 inline void require_valid_scene(const Scene& scene) {
@@ -19,11 +32,7 @@ inline void require_valid_scene(const Scene& scene) {
                 require(part < scene.materials.size() && part != i, "blend parts defined, not the blend itself");
     for (const Shape& shape : scene.shapes) {
         require(shape.material < scene.materials.size(), "shape materials defined");
-        const size_t count = shape.kind == ShapeKind::kMesh     ? scene.meshes.size()
-                             : shape.kind == ShapeKind::kSphere ? scene.spheres.size()
-                             : shape.kind == ShapeKind::kDisk   ? scene.disks.size()
-                                                                : scene.curves.size();
-        require(shape.index < count, "shape geometry defined");
+        require(shape.index < geometry_count(scene, shape.kind), "shape geometry defined");
         require(shape.emission.is_finite(), "finite emission");
         require(shape.kind != ShapeKind::kCurves || shape.emission.is_black(), "curves do not emit");
     }
@@ -49,6 +58,15 @@ inline void require_valid_scene(const Scene& scene) {
         require(is_finite(disk.center) && is_finite(disk.axis_u) && is_finite(disk.axis_v) && is_finite(disk.normal) &&
                     disk.area() > 0 && std::isfinite(disk.area()),
                 "valid disks");
+    for (const Quadric& quadric : scene.quadrics) {
+        require(std::isfinite(quadric.radius) && quadric.radius > 0 && quadric.phi_max > 0 &&
+                    quadric.phi_max <= 2 * 3.14159265358979323846,
+                "quadrics with a radius and a phi range");
+        require(std::isfinite(quadric.object_area()) && quadric.object_area() > 0, "quadrics with area");
+        for (const Transform* map : {&quadric.to_world, &quadric.to_object})
+            for (const auto& row : map->matrix())
+                for (double v : row) require(std::isfinite(v), "finite quadric transforms");
+    }
     for (const CurveSet& curves : scene.curves) {
         for (uint32_t first : curves.segments) require(size_t(first) + 4 <= curves.points.size(), "curve segments defined");
         for (const CurvePoint& c : curves.points)
