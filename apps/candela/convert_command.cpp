@@ -8,15 +8,11 @@
 #include "candela/core/error.h"
 #include "candela/formats/pbrt/pbrt_convert.h"
 #include "candela/formats/scene_file.h"
+#include "candela/render/job/render_overrides.h"
 
 namespace fs = std::filesystem;
 
 namespace candela::cli {
-namespace {
-
-[[noreturn]] void bad_flag(const std::string& message) { throw SceneError({}, message); }
-
-}  // namespace
 
 CLI::App* add_convert_command(CLI::App& app, ConvertArgs& args) {
     CLI::App* cmd = app.add_subcommand("convert", "Convert a pbrt-v4 scene into candela's JSON scene format");

@@ -28,9 +28,6 @@ namespace {
 // count from here.
 const auto kProgramStart = std::chrono::steady_clock::now();
 
-// A flag value the user got wrong: reported like a scene error, without a file.
-[[noreturn]] void bad_flag(const std::string& message) { throw SceneError({}, message); }
-
 // The flags' syntax, into typed values; the job checks the values (job.h, render_overrides.h).
 RenderOverrides overrides_of(const RenderArgs& a) {
     RenderOverrides o{.spp = a.spp, .seed = a.seed, .iso = a.iso, .exposure_time = a.exposure_time,

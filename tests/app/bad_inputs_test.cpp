@@ -27,7 +27,7 @@
 #include "candela/formats/scene_file.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 namespace fs = std::filesystem;
 

@@ -17,7 +17,7 @@
 #include "support/run_command.h"
 #include "support/test_files.h"
 
-namespace {
+namespace CANDELA_UNITY_ID {
 
 namespace fs = std::filesystem;
 

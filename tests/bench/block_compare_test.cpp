@@ -11,7 +11,7 @@
 #include "bench/block_compare.h"
 
 namespace candela::bench {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr double kTol = 1e-6;  // float pixels, double arithmetic
 
@@ -141,7 +141,7 @@ TEST(BlockCompare, RefusesImagesOfDifferentSizesOrABlackReferenceChannel) {
 }  // namespace candela::bench
 
 namespace candela::bench {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // block_means keeps what compare_blocks reads: comparing the means with block 1 gives the same
 // figures as comparing the images with block 16.

@@ -8,7 +8,7 @@
 #include "candela/camera/camera_frame.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 CameraSettings look_at_camera(CameraType type = CameraType::kPerspective, float aperture = 0.0f) {
     CameraSettings s;

@@ -9,7 +9,7 @@
 #include "candela/camera/camera.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kWidth = 120, kHeight = 80;
 constexpr float kFilmHeight = 3.0f;

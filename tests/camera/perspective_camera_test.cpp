@@ -6,7 +6,7 @@
 #include "candela/camera/perspective_camera.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 CameraSettings looking_down_minus_z(int w, int h, float fov) {
     CameraSettings s;

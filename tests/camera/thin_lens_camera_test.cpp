@@ -10,7 +10,7 @@
 #include "candela/camera/camera.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kWidth = 160, kHeight = 120;
 constexpr float kFov = 50.0f, kAperture = 0.2f, kFocus = 6.0f;

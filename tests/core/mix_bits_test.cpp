@@ -6,7 +6,7 @@
 #include "candela/core/mix_bits.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TEST(MixBits, IsSplitmix64sOutputFunction) {
     constexpr uint64_t kGolden = 0x9e3779b97f4a7c15ull;

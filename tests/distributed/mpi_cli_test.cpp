@@ -24,7 +24,7 @@
 #include "support/test_files.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 namespace fs = std::filesystem;
 using test::ChildProcess;

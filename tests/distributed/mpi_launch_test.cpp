@@ -7,7 +7,7 @@
 #include <cstdlib>
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Clears the launchers' variables for a test and restores nothing: each test sets what it needs.
 void clear_launcher_variables() {

@@ -7,7 +7,7 @@
 #include <vector>
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TEST(TileMessages, RoundTrip) {
     MessageWriter w(TileMessageType::kResult);

@@ -8,7 +8,7 @@
 #include <vector>
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Takes every tile of a pass by asking the ranks in turn for `want` tiles each, marking each
 // done by the rank that took it; returns (tile, rank, send_values) in the order handed out.

@@ -7,7 +7,7 @@
 #include "candela/film/film.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TEST(FilmRegion, ReadsRowMajorWithWeightsAfterTheSums) {
     Film film(5, 4, true);

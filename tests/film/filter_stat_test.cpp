@@ -9,7 +9,7 @@
 #include "support/chi2.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // The chi-square tests in this file, for the Sidak correction.
 constexpr int kChi2Tests = 5;

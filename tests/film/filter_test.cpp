@@ -10,7 +10,7 @@
 #include "support/chi2.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr FilterType kAllFilters[] = {FilterType::kBox, FilterType::kTent, FilterType::kGaussian,
                                       FilterType::kSmallpt};

@@ -9,7 +9,7 @@
 #include "candela/film/pixel_filter.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 FilterSettings settings(FilterType type, float radius) {
     FilterSettings s;

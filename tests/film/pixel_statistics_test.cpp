@@ -12,7 +12,7 @@
 #include "candela/sampling/sampler.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kSide = 64;  // 4096 pixels
 constexpr uint32_t kSpp = 16;

@@ -16,7 +16,7 @@
 #include "candela/spectrum/cie_tables.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // pbrt-v4's sensor names (PixelSensor::Create looks up NAME_r, NAME_g, NAME_b; Spectra::Init
 // lists these 17).

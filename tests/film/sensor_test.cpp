@@ -17,7 +17,7 @@
 #include "candela/spectrum/dense_spectrum.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // FLT_EPSILON as a double: the unit of the float rounding bounds below.
 constexpr double kFloatEps = double(FLT_EPSILON);

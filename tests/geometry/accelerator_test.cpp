@@ -11,7 +11,7 @@
 #include "candela/sampling/warps.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // A scene of the given meshes and spheres, shape i = mesh i, then the spheres.
 struct TestScene {

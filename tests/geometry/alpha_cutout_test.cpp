@@ -9,7 +9,7 @@
 #include "candela/sampling/rng.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // A plane quad at z = 1 (shape 0) of the given alpha in front of an opaque one at z = 2
 // (shape 1), both wide enough for every test ray; and a sphere of the given alpha at z = 10.

@@ -10,7 +10,7 @@
 #include "support/printers.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 Vec3f winding(const TriangleMesh& m, size_t t) {
     const Vec3f a = m.positions[m.indices[3 * t]];

@@ -11,7 +11,7 @@
 #include "candela/geometry/curves.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // A quadratic Bezier at t.
 Vec3f quadratic(const Vec3f& a, const Vec3f& b, const Vec3f& c, float t) {

@@ -19,7 +19,7 @@
 #include "support/quadric_points.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::expect_near;
 

@@ -16,7 +16,7 @@
 #include "candela/scene/memory_budget.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 #if defined(__SANITIZE_ADDRESS__)
 constexpr uint64_t kAllocatorOverhead = 2;

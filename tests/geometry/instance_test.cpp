@@ -16,7 +16,7 @@
 #include "candela/textures/texture_kinds.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // The object: a quad with tilted vertex normals (shape 0), a disk (shape 1) and, for similarity
 // transforms, an inside-out sphere (shape 2), apart from each other in object space.

@@ -17,7 +17,7 @@
 #include "support/printers.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 struct Polyhedron {
     std::vector<Vec3f> positions;

@@ -20,7 +20,7 @@
 #include "support/quadric_points.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::expect_near;
 using test::quadric_point_of_uv;

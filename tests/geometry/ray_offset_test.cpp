@@ -11,7 +11,7 @@
 #include "candela/sampling/warps.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TEST(OffsetRayOrigin, LeavesTheErrorBoxOnTheNormalsSideAtEveryScale) {
     Rng rng(17, 3);

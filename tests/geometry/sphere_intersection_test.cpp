@@ -8,7 +8,7 @@
 #include "candela/sampling/rng.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Reference: the same quadratic solved in long double with the textbook formula, which is exact
 // enough at 64-bit mantissa for these magnitudes.

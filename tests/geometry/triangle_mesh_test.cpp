@@ -10,7 +10,7 @@
 #include "candela/math/constants.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr float kTol = 1e-5f;
 

@@ -11,7 +11,7 @@
 #include "image/test_files.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using testing::TempDir;
 using testing::read_test_file;

@@ -25,7 +25,7 @@
 #include "image/test_files.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using testing::read_test_file;
 using testing::TempDir;

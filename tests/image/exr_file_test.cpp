@@ -17,7 +17,7 @@
 #include "image/test_files.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using testing::TempDir;
 

@@ -12,7 +12,7 @@
 #include "support/png_bytes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using testing::TempDir;
 using test::make_png;

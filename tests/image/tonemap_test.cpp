@@ -7,7 +7,7 @@
 #include <limits>
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 DisplayEncoding film_with(Tonemap tonemap, float exposure = 0.5f) {
     DisplayEncoding film;

@@ -9,7 +9,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // A camera ray straight down onto a floor at y = 0.
 Ray down_ray() { return Ray{{0, 1, 0}, {0, -1, 0}}; }

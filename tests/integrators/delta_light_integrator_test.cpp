@@ -15,7 +15,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // small_box_scene lit by a point, a spot and a directional light only.
 Scene box_under_delta_lights(int spp) {

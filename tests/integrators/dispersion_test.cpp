@@ -17,7 +17,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 

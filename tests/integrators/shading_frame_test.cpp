@@ -9,7 +9,7 @@
 #include "candela/sampling/warps.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 void expect_near(const Vec3f& a, const Vec3f& b, float tol) {
     EXPECT_NEAR(a.x, b.x, tol);

@@ -21,7 +21,7 @@
 #include "support/render_moments.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 Scene scene_of(const std::string& json) {
     return load_scene_from_string(json, std::filesystem::path(CANDELA_TEST_DATA_DIR) / "scenes" / "inline.json");

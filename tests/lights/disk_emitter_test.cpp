@@ -13,7 +13,7 @@
 #include "support/printers.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 const Vec3f kOrigin{0.0f, 0.0f, 0.0f};
 

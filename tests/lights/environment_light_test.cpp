@@ -9,7 +9,7 @@
 #include "candela/sampling/rng.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 const Rgb kRed(1.0f, 0.0f, 0.0f);
 const Rgb kBlue(0.0f, 0.0f, 1.0f);

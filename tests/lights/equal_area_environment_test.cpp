@@ -11,7 +11,7 @@
 #include "candela/sampling/rng.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 void expect_rgb_near(Rgb a, Rgb b, float tolerance = 1e-5f) {
     EXPECT_NEAR(a.r, b.r, tolerance);

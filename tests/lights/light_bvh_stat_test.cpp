@@ -13,7 +13,7 @@
 #include "support/chi2.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kTests = 4;  // chi-square tests in this suite (the control excluded)
 constexpr int kSamples = 400000;

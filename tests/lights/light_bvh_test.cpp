@@ -11,7 +11,7 @@
 #include "support/printers.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 Vec3f random_point(Rng& rng, float half) {
     return Vec3f(rng.next_float(), rng.next_float(), rng.next_float()) * (2.0f * half) - Vec3f(half, half, half);

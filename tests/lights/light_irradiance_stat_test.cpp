@@ -11,7 +11,7 @@
 #include "lights/light_test_scene.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kSamples = 200'000;
 

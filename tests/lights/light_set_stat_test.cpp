@@ -12,7 +12,7 @@
 #include "support/chi2.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kChi2Tests = 14;  // in this file, for the Sidak correction
 const Rgb kWhite{1.0f};

@@ -15,7 +15,7 @@
 #include "support/quadric_points.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kChi2Tests = 4;  // in this file, for the Sidak correction
 

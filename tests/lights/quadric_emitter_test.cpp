@@ -11,7 +11,7 @@
 #include "candela/sampling/rng.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TEST(QuadricEmitter, SamplesLieOnTheClippedSurfaceAndPdfAgreesBitForBit) {
     const Transform m = Transform::translate({1, 2, 3}) * Transform::rotate(normalize(Vec3d(0, 1, 1)), 0.5) *

@@ -11,7 +11,7 @@
 #include "support/printers.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Checks samples from ref: on the sphere to 1e-6 relative (or to the float rounding of p, for a
 // small sphere far from the origin), normal = the (possibly reversed) outward normal there,

@@ -14,7 +14,7 @@
 #include "support/chi2.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr TransportMode kRadiance = TransportMode::kRadiance;
 

@@ -8,7 +8,7 @@
 #include "support/printers.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // The unit direction at polar cosine cos_theta and azimuth phi (local frame, z = normal).
 Vec3f direction(float cos_theta, float phi) {

@@ -42,7 +42,7 @@
 #include "support/chi2.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr TransportMode kRadiance = TransportMode::kRadiance;
 constexpr TransportMode kImportance = TransportMode::kImportance;

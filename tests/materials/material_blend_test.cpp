@@ -12,7 +12,7 @@
 #include "support/chi2.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // The points and directions a camera sees on a quad: a 256 x 256 grid on [0, 1]^2 (z = 1.5), each
 // seen from (0.3, 0.2, 4).

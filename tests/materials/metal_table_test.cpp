@@ -7,7 +7,7 @@
 #include "candela/materials/metal_table.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 struct DocumentedMetal {
     Metal metal;

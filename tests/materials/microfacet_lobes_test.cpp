@@ -15,7 +15,7 @@
 #include "support/printers.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr TransportMode kRadiance = TransportMode::kRadiance;
 constexpr TransportMode kImportance = TransportMode::kImportance;

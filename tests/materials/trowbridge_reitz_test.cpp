@@ -13,7 +13,7 @@
 #include "materials/microfacet_quadrature.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // The integrals below are accurate to about 1e-6: D and D_w are evaluated in float (relative
 // error ~1e-6) and integrated to 1e-7 per piece; 5e-5 leaves room for that and nothing more.

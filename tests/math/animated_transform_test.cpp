@@ -9,7 +9,7 @@
 #include "candela/math/constants.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr double kTol = 1e-9;
 

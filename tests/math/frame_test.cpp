@@ -10,7 +10,7 @@
 #include "candela/math/frame.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr float kTol = 2e-6f;
 

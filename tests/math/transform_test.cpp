@@ -8,7 +8,7 @@
 #include "candela/math/transform.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr double kTol = 1e-12;
 const double kQuarterTurn = kPiD / 2.0;

@@ -4,7 +4,7 @@
 #include "candela/math/vec.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 ::testing::AssertionResult vec_eq(const Vec3f& a, const Vec3f& b, float tol) {
     if (std::abs(a.x - b.x) <= tol && std::abs(a.y - b.y) <= tol && std::abs(a.z - b.z) <= tol)

@@ -10,7 +10,7 @@
 #include "candela/spectrum/color_space.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // The largest channel difference relative to the largest channel.
 float relative_difference(const Rgb& a, const Rgb& b) {

@@ -9,7 +9,7 @@
 #include "grid_media_fixtures.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Reference values from pbrt-v4's code (mmp/pbrt-v4 src/pbrt/util/noise.cpp: Noise, DNoise, the
 // permutation table; src/pbrt/media.h: CloudMedium::Density), compiled outside this repository

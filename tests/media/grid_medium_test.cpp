@@ -9,7 +9,7 @@
 #include "grid_media_fixtures.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::grey_spectrum;
 

@@ -9,7 +9,7 @@
 #include "candela/sampling/rng.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 LatticeGrid random_lattice(int nx, int ny, int nz, Rng& rng) {
     LatticeGrid g;

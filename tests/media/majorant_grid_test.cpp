@@ -10,7 +10,7 @@
 #include "grid_media_fixtures.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::random_grid_medium;
 using test::random_ray_at;

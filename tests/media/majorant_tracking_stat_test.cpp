@@ -20,7 +20,7 @@
 #include "grid_media_fixtures.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kWalks = 100000;
 constexpr double kSigmas = 4.5;

@@ -11,7 +11,7 @@
 #include "grid_media_fixtures.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 const Transform kCtm = Transform::translate(Vec3d(-1, 0, 2)) * Transform::scale(Vec3d(1.5, 2, 1));
 

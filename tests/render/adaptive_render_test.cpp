@@ -18,7 +18,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Every value of both films (sums, squares, counts) has the same bits.
 bool same_bits(const Film& a, const Film& b) {

@@ -20,7 +20,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::Polygon;
 using test::polygon_irradiance;

@@ -13,7 +13,7 @@
 #include "candela/render/renderer.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kSize = 32;
 constexpr int kSpp = 16;

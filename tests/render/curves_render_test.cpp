@@ -11,7 +11,7 @@
 #include "support/render_moments.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // A curve 4 wide along x, seen from z = 5 through a narrow field of view that it fills.
 Scene curve_scene(const std::string& curve_type, bool spectral) {

@@ -13,7 +13,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Float rounding of exactly-1 paths (f |cos| / pdf for a mirror) is noise-free but not exact.
 constexpr double kRoundingSigma = 1e-5;

@@ -14,7 +14,7 @@
 #include "candela/render/error_allocation.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Sets every pixel of `block` to `n` samples whose halves' means are 1 + d and 1 - d (so mean 1
 // and, from the halves, variance of the mean d^2 times 2^m / n) and that traced `rays` rays.

@@ -13,7 +13,7 @@
 #include "candela/formats/json/scene_loader.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 std::vector<std::filesystem::path> example_scenes() {
     std::vector<std::filesystem::path> out;

@@ -10,16 +10,14 @@
 #include <cfloat>
 #include <string>
 
-namespace {
-constexpr double kEps = double(FLT_EPSILON);
-}
-
 #include "candela/formats/json/scene_loader.h"
 #include "candela/render/renderer.h"
 #include "candela/spectrum/color_space.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
+
+constexpr double kEps = double(FLT_EPSILON);
 
 Scene emitter_scene(bool spectral, const std::string& film) {
     const std::string json = R"({

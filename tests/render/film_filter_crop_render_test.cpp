@@ -13,7 +13,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Every filter: the named ones and pbrt-v4's parameterized and tabulated ones.
 std::vector<FilterSettings> all_filters() {

@@ -15,7 +15,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 enum class Enclosure { kSphere, kCube };
 

@@ -12,7 +12,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kSize = 24;
 constexpr int kBlock = 4;

@@ -13,7 +13,7 @@
 #include "support/render_moments.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kBlock = 8;
 

@@ -22,7 +22,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kWidth = 32, kHeight = 4;
 constexpr double kHalfFovX = 20.0;  // degrees

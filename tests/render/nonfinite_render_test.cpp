@@ -18,7 +18,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kWidth = 16, kHeight = 8, kSpp = 16;
 const Rgb kEmission(2e38f, 1.0f, 1.0f);

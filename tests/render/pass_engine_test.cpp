@@ -17,7 +17,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 bool same_bits(const Image& a, const Image& b) {
     return a.width == b.width && a.height == b.height &&

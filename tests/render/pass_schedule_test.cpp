@@ -7,7 +7,7 @@
 #include <optional>
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr double kTarget = 2.0;
 constexpr std::optional<double> kNoDeadline = std::nullopt;

@@ -16,7 +16,7 @@
 #include "candela/formats/json/scene_loader.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 bench::BlockComparison compare_with_pbrt(bool spectral) {
     const std::filesystem::path root(CANDELA_SOURCE_DIR);

@@ -28,7 +28,7 @@
 #include "candela/render/renderer.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 struct SmallScene {
     const char* name;

@@ -15,7 +15,7 @@
 #include "candela/render/renderer.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 struct PbrtScene {
     const char* name;

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TEST(ProgressBar, FractionIsTheWorkDone) {
     ProgressBar bar(200, false);

@@ -26,7 +26,7 @@ inline void PrintTo(RenderEnd e, std::ostream* os) {
     *os << (e == RenderEnd::kComplete ? "complete" : e == RenderEnd::kStopped ? "stopped" : "deadline");
 }
 
-namespace {
+namespace CANDELA_UNITY_ID {
 
 bool same_bits(const Film& a, const Film& b) {
     return a.width() == b.width() && a.height() == b.height() &&

@@ -13,7 +13,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 bool bit_identical(const Image& a, const Image& b) {
     return a.width == b.width && a.height == b.height &&

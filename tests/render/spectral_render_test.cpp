@@ -13,7 +13,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kSize = 32;
 constexpr int kBlock = 8;

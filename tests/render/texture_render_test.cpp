@@ -10,7 +10,7 @@
 #include "candela/formats/json/scene_loader.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // The quad [-1, 1]^2 in the z = 0 plane (u along +x, v along +y), seen from +z with +y up,
 // filling a view of [-0.8, 0.8]^2 (tan(21.8 degrees) 2 = 0.8) in 8x8 pixels.

@@ -21,7 +21,7 @@
 #include "support/test_scenes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kSize = 48;
 constexpr float kFov = 30.0f;

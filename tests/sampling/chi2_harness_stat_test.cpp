@@ -8,7 +8,7 @@
 #include "support/chi2.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // The tests below that must pass, for the Sidak correction.
 constexpr int kPassingChi2Tests = 2;

@@ -7,7 +7,7 @@
 #include "support/chi2.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Q(n, y) for integer n in closed form: exp(-y) sum_{i<n} y^i / i! (the Poisson CDF), each term
 // through logarithms so large n neither overflows nor underflows.

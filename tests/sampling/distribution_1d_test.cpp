@@ -13,7 +13,7 @@
 #include "candela/sampling/rng.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Every float in [0, 1) that is a multiple of 1/n, plus 0, the largest float below 1, and the
 // floats just around each CDF edge of `d` (where an off-by-one would show).

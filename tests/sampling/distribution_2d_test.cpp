@@ -8,7 +8,7 @@
 #include "candela/sampling/rng.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // 4 x 3 weights with a zero row (row 1) and zero cells in the others.
 const std::vector<float> kWeights = {1.0f, 0.0f, 2.0f, 3.0f,   //

@@ -9,7 +9,7 @@
 #include "materials/lobe_cases.h"
 
 namespace candela::test {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // The integral over the sphere of p(cos) weight(cos), by the midpoint rule in cos (d omega =
 // 2 pi d cos for a function of cos alone); 100000 intervals resolve the peak of |g| = 0.9.

@@ -8,7 +8,7 @@
 #include "support/chi2.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // erfinv(x) in double by Newton's method on std::erf, started from the float approximation.
 double erfinv_reference(double x) {

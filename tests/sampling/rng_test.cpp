@@ -10,7 +10,7 @@
 #include "candela/sampling/rng.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Mean and variance of n values, accumulated in double.
 struct Moments {

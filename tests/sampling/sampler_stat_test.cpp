@@ -15,7 +15,7 @@
 #include "candela/sampling/sampler.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr int kReplications = 256;
 const std::vector<uint32_t> kCounts = {16, 64, 256, 1024, 4096};

@@ -10,7 +10,7 @@
 #include "candela/sampling/sampler.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TEST(OwenSobol, ReverseBits) {
     EXPECT_EQ(reverse_bits(1u), 0x80000000u);

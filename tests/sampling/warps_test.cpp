@@ -14,7 +14,7 @@
 #include "support/chi2.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // A grid of n x n sample points including the corners 0 and the largest float below 1.
 std::vector<Vec2f> sample_grid(int n) {

@@ -12,7 +12,7 @@
 #include "candela/formats/json/scene_loader.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 namespace fs = std::filesystem;
 

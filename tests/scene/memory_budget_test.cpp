@@ -15,7 +15,7 @@
 #include "candela/scene/scene.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr uint64_t kMiB = uint64_t(1) << 20;
 constexpr uint64_t kGiB = uint64_t(1) << 30;

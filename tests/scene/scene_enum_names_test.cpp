@@ -5,7 +5,7 @@
 #include <array>
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TEST(EnumNames, IntegratorNamesRoundTrip) {
     ASSERT_EQ(integrator_type_names().size(), 8u);

@@ -10,7 +10,7 @@
 #include "spectrum/chromaticity.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::chromaticity;
 using test::Xy;

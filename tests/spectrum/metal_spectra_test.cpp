@@ -16,7 +16,7 @@
 #include "candela/spectrum/spectrum_rgb.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 struct PbrtMetal {
     Metal metal;

@@ -14,7 +14,7 @@
 #include "spectrum/chromaticity.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::chromaticity;
 using test::Xy;

@@ -13,7 +13,7 @@
 #include "spectrum_round_trip.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 const RgbSigmoidFit& fit() {
     static const RgbSigmoidFit f;

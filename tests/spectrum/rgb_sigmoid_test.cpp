@@ -8,7 +8,7 @@
 #include <limits>
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 

@@ -12,7 +12,7 @@
 #include "spectrum_round_trip.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Colours over the RGB cube: every channel at (i + 1/2) / 23, i < 23, which falls between the
 // table's nodes, and at i / 10, i <= 10, which takes in its faces, edges and corners (primaries,

@@ -12,7 +12,7 @@
 #include "support/chi2.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TEST(VisibleWavelengthPdf, IntegratesToOneOverTheVisibleRange) {
     const auto pdf = [](double lambda) { return double(visible_wavelength_pdf(float(lambda))); };

@@ -8,7 +8,7 @@
 #include "candela/spectrum/named_spectra.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // The XYZ of 1 x D65 is the colour space's white bit for bit (the same float products summed in
 // the same order), and rgb_from_xyz times the white is (1, 1, 1) within a few double ulps (the

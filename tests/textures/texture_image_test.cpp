@@ -10,7 +10,7 @@
 #include <vector>
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // A float image of `channels` values per texel, row-major from the top row.
 TextureImage float_image(int width, int height, int channels, std::vector<float> values) {

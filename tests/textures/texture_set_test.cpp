@@ -9,7 +9,7 @@
 #include <vector>
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TextureContext at(float u, float v) { return TextureContext{Vec2f(u, v), Vec3f(0.0f)}; }
 

@@ -11,8 +11,6 @@ namespace {
 
 using Matrix = Transform::Matrix;
 
-Matrix identity_matrix() { return Transform().matrix(); }
-
 Matrix transpose(const Matrix& m) {
     Matrix t{};
     for (int i = 0; i < 4; ++i)
@@ -73,7 +71,7 @@ Transform rotation_from_quaternion(const Quaternion& q) {
     const double xx = q.v.x * q.v.x, yy = q.v.y * q.v.y, zz = q.v.z * q.v.z;
     const double xy = q.v.x * q.v.y, xz = q.v.x * q.v.z, yz = q.v.y * q.v.z;
     const double wx = q.v.x * q.w, wy = q.v.y * q.w, wz = q.v.z * q.w;
-    Matrix m = identity_matrix();
+    Matrix m = Transform().matrix();
     m[0][0] = 1.0 - 2.0 * (yy + zz);
     m[0][1] = 2.0 * (xy - wz);
     m[0][2] = 2.0 * (xz + wy);

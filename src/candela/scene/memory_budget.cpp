@@ -144,13 +144,14 @@ uint64_t texture_loading_memory_bytes(uint64_t file_bytes, int width, int height
                                                          uint64_t(std::max(channels, 0)) * uint64_t(decoded_bytes)));
 }
 
-uint64_t grid_medium_memory_bytes(uint64_t voxels, int float_grids, int rgb_grids, bool blackbody) {
-    // Two majorant grids of 16^3 floats at most (rgbgrid keeps one per colour mode); the
-    // blackbody table is 4096 x 3 floats.
-    constexpr uint64_t kMajorants = 2 * 16 * 16 * 16 * sizeof(float);
+uint64_t grid_medium_memory_bytes(uint64_t voxels, int float_grids, int rgb_grids, bool blackbody, int majorant_res) {
+    // Two majorant grids at most (rgbgrid keeps one per colour mode); the blackbody table is
+    // 4096 x 3 floats.
+    const uint64_t cells = uint64_t(std::max(majorant_res, 0));
+    const uint64_t majorants = 2 * cells * cells * cells * sizeof(float);
     constexpr uint64_t kBlackbody = uint64_t(BlackbodyRgbTable::kSize) * 3 * sizeof(float);
     const uint64_t per_voxel = uint64_t(float_grids) * sizeof(float) + uint64_t(rgb_grids) * (sizeof(Rgb) + sizeof(RgbSpectrum));
-    return saturating_sum(saturating_product(voxels, per_voxel), kMajorants + (blackbody ? kBlackbody : 0));
+    return saturating_sum(saturating_product(voxels, per_voxel), majorants + (blackbody ? kBlackbody : 0));
 }
 
 namespace {
@@ -162,10 +163,10 @@ uint64_t medium_memory_bytes(const Medium& medium) {
             using M = std::decay_t<decltype(m)>;
             if constexpr (std::is_same_v<M, GridMedium>) {
                 const uint64_t n = voxels(m.density.lattice) + voxels(m.temperature.lattice) + voxels(m.Le_scale.lattice);
-                return grid_medium_memory_bytes(n, 1, 0, !m.temperature.empty());
+                return grid_medium_memory_bytes(n, 1, 0, !m.temperature.empty(), m.majorant.res);
             } else if constexpr (std::is_same_v<M, RgbGridMedium>) {
                 const uint64_t n = voxels(m.sigma_a.rgb) + voxels(m.sigma_s.rgb) + voxels(m.Le.rgb);
-                return grid_medium_memory_bytes(n, 0, 1, false);
+                return grid_medium_memory_bytes(n, 0, 1, false, m.majorant_rgb.res);
             } else {
                 return uint64_t(sizeof(M));
             }

@@ -18,7 +18,7 @@
 #include "formats/json/scene_test_util.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::load_material;
 

@@ -12,7 +12,7 @@
 #include "image/test_files.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::load_error;
 using test::load_json;

@@ -9,7 +9,7 @@
 #include "support/printers.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::load_material;
 using test::material_error;

@@ -8,7 +8,7 @@
 #include "formats/json/scene_test_util.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TEST(TextPosition, CountsLinesAndColumnsFromOne) {
     const std::string text = "ab\ncd\n\nef";

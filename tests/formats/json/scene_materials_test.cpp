@@ -11,7 +11,7 @@
 #include "formats/json/scene_test_util.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::load_error;
 using test::load_json;

@@ -10,7 +10,7 @@
 #include "scene_test_util.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::load_error;
 using test::load_json;
@@ -124,7 +124,7 @@ struct BadMedium {
 };
 void PrintTo(const BadMedium& b, std::ostream* os) { *os << b.medium; }
 
-class SceneMediaGridErrors : public testing::TestWithParam<BadMedium> {};
+class SceneMediaGridErrors : public ::testing::TestWithParam<BadMedium> {};
 
 TEST_P(SceneMediaGridErrors, AreLocated) {
     const BadMedium& c = GetParam();
@@ -135,7 +135,7 @@ TEST_P(SceneMediaGridErrors, AreLocated) {
 
 INSTANTIATE_TEST_SUITE_P(
     Each, SceneMediaGridErrors,
-    testing::Values(
+    ::testing::Values(
         BadMedium{R"({"type": "uniformgrid", "size": [2, 2, 2], "density": [1, 2, 3, 4, 5]})", "/media/fog/density",
                   "\"density\" has 5 numbers; size 2 x 2 x 2 needs 8"},
         BadMedium{R"({"type": "uniformgrid", "size": [2, 1, 1], "density": [1, -2]})", "/media/fog/density/1",

@@ -16,7 +16,7 @@
 #include "support/png_bytes.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::load_error;
 using test::load_json;

@@ -14,7 +14,7 @@
 #include "support/printers.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 std::filesystem::path fixture(const std::string& name) {
     return std::filesystem::path(CANDELA_TEST_DATA_DIR) / "meshes" / name;

@@ -17,7 +17,7 @@
 
 namespace candela {
 
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TriangleMesh parse_fixture(const std::string& name) { return parse_obj(test::read_fixture("meshes/" + name), name); }
 

@@ -14,7 +14,7 @@
 #include "support/printers.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Appends little-endian binary values (the byte order pbrt-v4's exporters write).
 class LittleEndianWriter {

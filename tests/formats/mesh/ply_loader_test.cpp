@@ -20,7 +20,7 @@
 
 namespace candela {
 
-namespace {
+namespace CANDELA_UNITY_ID {
 
 TriangleMesh parse_fixture(const std::string& name) { return parse_ply(test::read_fixture("meshes/" + name), name); }
 

@@ -18,7 +18,7 @@
 #include "candela/scene/scene.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 namespace fs = std::filesystem;
 

@@ -18,7 +18,7 @@
 #include "support/test_files.h"
 
 namespace candela::pbrt {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 const std::filesystem::path& kFile = test::kInlineFile;
 using test::import;

@@ -11,7 +11,7 @@
 #include "candela/render/renderer.h"
 
 namespace candela::pbrt {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 const std::filesystem::path kScene =
     std::filesystem::path(CANDELA_TEST_DATA_DIR) / "pbrt" / "features" / "all_features.pbrt";

@@ -13,7 +13,7 @@
 #include "candela/scene/enum_names.h"
 
 namespace candela::pbrt {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 const std::filesystem::path kFile = std::filesystem::path(CANDELA_TEST_DATA_DIR) / "pbrt" / "inline.pbrt";
 

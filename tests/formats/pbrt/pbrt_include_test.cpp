@@ -11,7 +11,7 @@
 #include "recording_target.h"
 
 namespace candela::pbrt {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::RecordingTarget;
 

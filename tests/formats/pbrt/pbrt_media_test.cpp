@@ -13,7 +13,7 @@
 #include "formats/pbrt/pbrt_import_text.h"
 
 namespace candela::pbrt {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using Json = nlohmann::ordered_json;
 

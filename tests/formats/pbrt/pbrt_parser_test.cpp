@@ -12,7 +12,7 @@
 #include "support/fixtures.h"
 
 namespace candela::pbrt {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::RecordingTarget;
 

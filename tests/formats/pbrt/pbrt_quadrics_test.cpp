@@ -14,7 +14,7 @@
 #include "formats/pbrt/pbrt_import_text.h"
 
 namespace candela::pbrt {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::import;
 

@@ -8,7 +8,7 @@
 #include "candela/core/error.h"
 
 namespace candela::pbrt {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // Every token of `text` as "kind:text@line:col", read in chunks of `chunk` bytes.
 std::vector<std::string> tokens(const std::string& text, size_t chunk = 1 << 20, size_t max_token = 1 << 20) {

@@ -24,7 +24,7 @@
 #include "candela/formats/pbrt/pbrt_scene_loader.h"
 
 namespace candela::pbrt {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 namespace fs = std::filesystem;
 

@@ -16,7 +16,7 @@
 #include "support/test_files.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::error_of;
 using test::nvdb_fixture;

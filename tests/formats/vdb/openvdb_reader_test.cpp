@@ -23,7 +23,7 @@
 #include "support/test_files.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 using test::error_of;
 
@@ -194,7 +194,7 @@ TEST(OpenVdbReader, RefusesAGridTooLargeForTheBudgetBeforeAllocatingIt) {
 }  // namespace candela
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // The grid at world point p of the medium "m" of `scene_json`: its density times sigma_s (1).
 float density_at(const std::string& medium_json, const Vec3f& p) {
@@ -236,6 +236,18 @@ TEST(VdbMedia, BadFilesAndGridNamesAreLocatedAtTheFileKey) {
     const std::string wrong = error_of([&] { load(scene + "\"" + file + R"(", "grid_name": "smoke"}}})"); });
     EXPECT_NE(wrong.find("smoke"), std::string::npos) << wrong;
     EXPECT_NE(wrong.find("referenced by /media/m/file"), std::string::npos) << wrong;
+}
+
+TEST(VdbMedia, MemoryEstimateCountsTheMajorantGridOfAVdbMedium) {
+    // A NanoVDB medium's majorant grid is 64^3 floats (pbrt-v4's), 1 MiB: far more than this
+    // fixture's 8 x 6 x 5 voxels, and 32 times the two 16^3 grids a uniformgrid medium keeps.
+    const std::string file = test::nvdb_fixture("density_8x6x5_v32_3.nvdb").string();
+    const Scene s = load_scene_from_string(
+        fmt::format(R"({{"camera": {{"resolution": [1, 1]}}, "media": {{"m": {{"type": "nanovdb", "file": "{}"}}}}}})",
+                    file),
+        std::filesystem::path(CANDELA_TEST_DATA_DIR) / "scenes" / "inline.json");
+    ASSERT_EQ(s.media.size(), 1u);
+    EXPECT_GE(scene_memory_bytes(s), film_memory_bytes(1, 1) + 64 * 64 * 64 * sizeof(float));
 }
 
 }  // namespace

@@ -20,7 +20,7 @@
 #include "support/test_files.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 namespace fs = std::filesystem;
 

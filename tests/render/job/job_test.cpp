@@ -20,7 +20,7 @@
 #include "support/test_files.h"
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 namespace fs = std::filesystem;
 using test::fresh_dir;
@@ -241,7 +241,7 @@ TEST(RenderJob, MemoryIsCheckedAtTheResolutionRendered) {
 }  // namespace candela
 
 namespace candela {
-namespace {
+namespace CANDELA_UNITY_ID {
 
 // --integrator that ignores the scene's media is warned about, as the scene loader warns about a
 // scene file's own integrator; volpath is not.

@@ -22,9 +22,6 @@ namespace fs = std::filesystem;
 constexpr int kMaxSide = 32768;    // the scene loader's limits
 constexpr int kMaxSpp = 1 << 24;
 
-// A value the caller got wrong: reported like a scene error, without a file.
-[[noreturn]] void bad_flag(const std::string& message) { throw SceneError({}, message); }
-
 // The film's sensor flags, checked as the scene file's film keys are (formats/json/scene_loader.cpp).
 void apply_sensor(const RenderOverrides& o, FilmSettings& film) {
     auto positive_float = [](const char* flag, double v) {
@@ -103,6 +100,8 @@ std::optional<Resolution> resolution_of_film(const Scene& scene, int width, int 
 }
 
 }  // namespace
+
+void bad_flag(const std::string& message) { throw SceneError({}, message); }
 
 void apply_overrides(const RenderOverrides& o, Scene& scene) {
     if (o.spp) {

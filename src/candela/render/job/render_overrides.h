@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "candela/film/aov_layers.h"
 #include "candela/scene/render_settings.h"
@@ -43,6 +44,10 @@ struct RenderOverrides {
 // Checks each given value as the scene file's key is checked and applies it to `scene`. Throws
 // SceneError naming the flag (e.g. "--spp: expected an integer >= 1, got 0").
 void apply_overrides(const RenderOverrides& overrides, Scene& scene);
+
+// A flag's value the caller got wrong: thrown as a SceneError without a file, so that the command
+// line (and Python) report it as they report the scene file's errors.
+[[noreturn]] void bad_flag(const std::string& message);
 
 // Resuming: the settings a checkpoint's identity records (resolution, seed, sampler, integrator,
 // AOV layers, adaptive sampling) and, for a shard's part file, its target spp (`target_spp` > 0),
