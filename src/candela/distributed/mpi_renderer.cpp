@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "candela/core/error.h"
+#include "candela/core/seconds_since.h"
 #include "candela/distributed/mpi_channel.h"
 #include "candela/distributed/mpi_session.h"
 #include "candela/distributed/tile_messages.h"
@@ -43,8 +44,6 @@ constexpr auto kStarvedPollInterval = std::chrono::microseconds(100);
 // The work a rank keeps queued beyond one tile per thread, in seconds: several round trips of
 // requests, short against a pass (the queue's tail is what a pass's end may wait for).
 constexpr double kQueuedSeconds = 0.008;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 [[noreturn]] void protocol_error(const std::string& what) {
     throw std::runtime_error("MPI render: malformed message: " + what);

@@ -3,17 +3,13 @@
 #include <cctype>
 #include <string>
 
+#include "candela/core/file_extension.h"
 #include "candela/formats/pbrt/pbrt_scene_loader.h"
 
 namespace candela {
 
 bool is_pbrt_scene_file(const std::filesystem::path& file) {
     // "scene.pbrt", or "scene.pbrt.gz" (gzip-compressed, as pbrt-v4 reads it).
-    const auto lower_extension = [](const std::filesystem::path& p) {
-        std::string ext = p.extension().string();
-        for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-        return ext;
-    };
     const std::string ext = lower_extension(file);
     return ext == ".pbrt" || (ext == ".gz" && lower_extension(file.stem()) == ".pbrt");
 }

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "candela/core/error.h"
+#include "candela/core/file_extension.h"
 #include "candela/image/image_formats.h"
 
 namespace candela {
@@ -36,12 +37,6 @@ constexpr ImageFormat kFormats[] = {
     {".png", image_formats::read_png, image_formats::write_png},
     {".ppm", nullptr, image_formats::write_ppm},
 };
-
-std::string lower_extension(const fs::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 const ImageFormat* find_format(const fs::path& file, bool for_writing) {
     const std::string ext = lower_extension(file);

@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "candela/core/error.h"
+#include "candela/core/file_extension.h"
 #include "candela/image/image_formats.h"
 #include "candela/image/image_io.h"
 
@@ -12,12 +13,6 @@ namespace candela {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string lower_extension(const fs::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 // Layers a display format can show as they are (values in [0, 1], or mapped there).
 bool keeps_output_format(const ImageLayer& layer) { return layer.name == "albedo" || layer.name == "normal"; }

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "candela/core/error.h"
+#include "candela/core/seconds_since.h"
 #include "candela/film/film.h"
 #include "candela/film/pixel_statistics.h"
 #include "candela/render/adaptive_sampling.h"
@@ -23,8 +24,6 @@ namespace candela {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Throws RenderError when `start` cannot continue a render of `frame`: another size, or weight
 // sums where the pixel filter has none or the other way round.

@@ -11,9 +11,10 @@
 #include <vector>
 
 #include "candela/core/error.h"
-#include "candela/image/tonemap.h"
+#include "candela/core/file_extension.h"
 #include "candela/image/image_formats.h"
 #include "candela/image/image_io.h"
+#include "candela/image/tonemap.h"
 
 namespace candela {
 
@@ -23,12 +24,6 @@ namespace {
 
 constexpr const char* kStbExtensions[] = {".png", ".jpg", ".jpeg", ".tga", ".bmp"};
 constexpr const char* kFloatExtensions[] = {".exr", ".hdr", ".pfm"};
-
-std::string lower_extension(const fs::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 template <size_t N>
 bool is_one_of(const fs::path& file, const char* const (&extensions)[N]) {

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "candela/core/error.h"
+#include "candela/core/seconds_since.h"
 #include "candela/distributed/mpi_launch.h"
 #include "candela/formats/scene_file.h"
 #include "candela/image/image_io.h"
@@ -31,8 +32,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // A positive, finite number of seconds.
 void check_seconds(const char* flag, const std::optional<double>& value) {
