@@ -9,6 +9,11 @@
 
 namespace candela {
 
+// The largest camera resolution (each side) and samples per pixel a scene may ask for: the scene
+// loader, the render job's overrides and the checkpoint reader share them.
+inline constexpr int kMaxResolution = 32768;
+inline constexpr int kMaxSpp = 1 << 24;
+
 // path: next-event estimation + BSDF sampling with MIS (the default). bsdf: BSDF sampling only
 // (smallpt's estimator). whitted: direct light + perfect specular recursion. The rest are debug
 // views of the first hit.

@@ -29,8 +29,6 @@ constexpr std::array<std::string_view, 10> kSections = {"integrator", "sampler",
 // In the order of CameraType and FovAxis (camera_settings.h).
 constexpr std::array<std::string_view, 2> kCameraTypes = {"perspective", "orthographic"};
 constexpr std::array<std::string_view, 5> kFovAxes = {"x", "y", "diagonal", "smaller", "larger"};
-constexpr int kMaxResolution = 32768;
-constexpr int kMaxSpp = 1 << 24;
 // |sin| of the angle between up and the view direction below which the camera frame is undefined.
 constexpr double kParallelSine = 1e-6;
 

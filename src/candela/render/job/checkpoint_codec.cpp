@@ -97,7 +97,7 @@ CommonHeader read_common_header(const fs::path& file, Reader& r, uint64_t size) 
     if (r.overlong()) fail(file, "corrupt checkpoint header: a name longer than any candela writes");
     if (r.truncated())
         fail(file, fmt::format("truncated checkpoint: {} bytes, the header alone is longer", size));
-    if (width < 1 || height < 1 || width > uint32_t(kMaxSide) || height > uint32_t(kMaxSide))
+    if (width < 1 || height < 1 || width > uint32_t(kMaxResolution) || height > uint32_t(kMaxResolution))
         fail(file, fmt::format("corrupt checkpoint header: resolution {}x{}", width, height));
     id.width = int(width);
     id.height = int(height);

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "candela/render/job/checkpoint.h"
+#include "candela/scene/render_settings.h"
 
 namespace candela::checkpoint_codec {
 
@@ -27,7 +28,6 @@ inline constexpr uint32_t kStatisticsFlag = 2u;
 inline constexpr uint32_t kStatisticsV2Flag = 4u;
 inline constexpr uint32_t kAovFlagShift = 8;
 inline constexpr uint32_t kMaxString = 64;
-inline constexpr int kMaxSide = 32768;  // the scene loader's limit
 // The longest common header: magic, format version, three names of kMaxString bytes, hash, seed,
 // width, height, samples done, dropped samples.
 inline constexpr uint64_t kMaxCommonHeaderBytes = 8 + 4 + 3 * (4 + kMaxString) + 8 + 8 + 4 + 4 + 4 + 8;

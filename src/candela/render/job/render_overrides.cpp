@@ -19,9 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kMaxSide = 32768;    // the scene loader's limits
-constexpr int kMaxSpp = 1 << 24;
-
 // The film's sensor flags, checked as the scene file's film keys are (formats/json/scene_loader.cpp).
 void apply_sensor(const RenderOverrides& o, FilmSettings& film) {
     auto positive_float = [](const char* flag, double v) {
@@ -86,7 +83,7 @@ std::optional<Resolution> resolution_of_film(const Scene& scene, int width, int 
     // One side at a time: crop_pixel_bounds treats them alike.
     auto side = [&](int film_side, float c0, float c1) -> std::optional<int> {
         std::optional<int> found;
-        for (int n = 1; n <= kMaxSide; ++n) {
+        for (int n = 1; n <= kMaxResolution; ++n) {
             const PixelBounds b = crop_pixel_bounds(n, 1, {c0, c1, 0.0f, 1.0f});
             if (b.width() != film_side) continue;
             if (found) return std::nullopt;
@@ -111,8 +108,8 @@ void apply_overrides(const RenderOverrides& o, Scene& scene) {
     if (o.seed) scene.sampler.seed = *o.seed;
     if (o.resolution) {
         const auto [w, h] = *o.resolution;
-        if (w < 1 || h < 1 || w > kMaxSide || h > kMaxSide)
-            bad_flag(fmt::format("--resolution: each side must be in 1..{}, got {}x{}", kMaxSide, w, h));
+        if (w < 1 || h < 1 || w > kMaxResolution || h > kMaxResolution)
+            bad_flag(fmt::format("--resolution: each side must be in 1..{}, got {}x{}", kMaxResolution, w, h));
         scene.camera.width = w;
         scene.camera.height = h;
     }
