@@ -3,6 +3,7 @@
 // targets check it): the renderer indexes these without further checks.
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 #include "candela/scene/scene.h"
 #include "mesh_invariants.h"
@@ -60,7 +61,7 @@ inline void require_valid_scene(const Scene& scene) {
                 "valid disks");
     for (const Quadric& quadric : scene.quadrics) {
         require(std::isfinite(quadric.radius) && quadric.radius > 0 && quadric.phi_max > 0 &&
-                    quadric.phi_max <= 2 * 3.14159265358979323846,
+                    quadric.phi_max <= 2 * std::numbers::pi,
                 "quadrics with a radius and a phi range");
         require(std::isfinite(quadric.object_area()) && quadric.object_area() > 0, "quadrics with area");
         for (const Transform* map : {&quadric.to_world, &quadric.to_object})
