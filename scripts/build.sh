@@ -4,8 +4,8 @@
 # another build folder (default build/); CMAKE_ARGS adds configure options.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# CI: warnings are errors, and each target compiles in unity batches (CMakeLists.txt,
-# CANDELA_UNITY_BUILD), which halves a cold build's time; an edit then recompiles its whole batch.
+# CI: warnings are errors, and the test executables compile in unity batches (CMakeLists.txt,
+# CANDELA_UNITY_BUILD), which halves their cold compile; an edit then recompiles its whole batch.
 werror=OFF
 unity=OFF
 [ -n "${CI:-}" ] && werror=ON && unity=ON
