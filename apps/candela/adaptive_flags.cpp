@@ -27,9 +27,16 @@ std::string adaptive_summary(const RenderResult& result, Shard shard) {
     if (shard.count > 1)
         for (const Tile& tile : shard_tiles(film.width(), film.height(), shard)) regions.push_back(tile.bounds());
     const SppSummary spp = spp_summary(film, regions);
-    return fmt::format(", relMSE ~{:.3g}{}, spp mean {:.1f} min {:g} max {:g}",
+    // Every pixel stopped at the same count: the render stopped at its first check, where the
+    // estimate has seen the fewest samples. It cannot see light that no sample has found yet (a
+    // caustic, a lamp behind glass): say so, so that a user can tell why it stopped there.
+    const bool at_first_check = result.stats.converged && spp.min == spp.max;
+    return fmt::format(", relMSE ~{:.3g}{}, spp mean {:.1f} min {:g} max {:g}{}",
                        result.stats.relmse_estimate.value_or(estimated_relmse(film, regions)),
-                       result.stats.converged ? " (converged)" : "", spp.mean, spp.min, spp.max);
+                       result.stats.converged ? " (converged)" : "", spp.mean, spp.min, spp.max,
+                       at_first_check ? " (stopped at the first check: the estimate cannot see light that no "
+                                        "sample has found yet)"
+                                      : "");
 }
 
 }  // namespace candela::cli

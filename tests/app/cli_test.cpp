@@ -86,6 +86,13 @@ TEST(Cli, TargetErrorAndAdaptiveSummaryAndResume) {
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("of 4096 spp"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("(converged), spp mean"), std::string::npos) << r.output;
+    // A target met at the first check: the summary says what the estimate cannot see.
+    r = run_candela("render " + kScene + " --resolution 16x16 --spp 4096 --target-error 10 -o " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("min 16 max 16 (stopped at the first check: the estimate cannot see light that no sample "
+                            "has found yet)"),
+              std::string::npos)
+        << r.output;
 
     r = run_candela("render " + kScene + " --resolution 16x16 --spp 24 --noise-threshold 0.2 --checkpoint-every 100 -o " +
                     out);

@@ -4,6 +4,8 @@
 // with fixed seeds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -19,7 +21,8 @@ constexpr uint32_t kSpp = 16;
 constexpr double kMean = 1.0 / 3.0;
 constexpr double kVariance = 1.0 / 5.0 - 1.0 / 9.0;  // E[u^4] - E[u^2]^2
 // The central fourth moment of u^2: E[(X - m)^4] from E[X^k] = 1/(2k + 1).
-constexpr double kFourthMoment = 1.0 / 9.0 - 4.0 * kMean / 7.0 + 6.0 * kMean * kMean / 5.0 - 3.0 * kMean * kMean * kMean * kMean;
+constexpr double kFourthMoment =
+    1.0 / 9.0 - 4.0 * kMean / 7.0 + 6.0 * kMean * kMean / 5.0 - 3.0 * kMean * kMean * kMean * kMean;
 
 // A film whose pixel p holds kSpp samples f(u) in all three channels, u the first number of
 // sample s of pixel p; also the pixel means.
@@ -152,7 +155,7 @@ TEST(PixelStatistics, SobolSamplesGiveACloseConservativeVarianceOfTheMeanFromThe
     EXPECT_LT(estimate, 0.2 * mean_estimate(film));
 }
 
-TEST(PixelStatistics, RelativeVarianceAndRelmseFollowTheBenchmarkDefinition) {
+TEST(PixelStatistics, RelativeVarianceAndRelmseFollowTheBenchmarkDefinitionWithARobustValue) {
     Film film(2, 1, false, {}, true);
     for (const float value : {1.0f, 3.0f}) {  // pixel 0: samples 1 and 3
         add_to_sum(film.sum(0, 0), Rgb(value, value, value));
@@ -160,12 +163,14 @@ TEST(PixelStatistics, RelativeVarianceAndRelmseFollowTheBenchmarkDefinition) {
         film.count(0, 0) += 1.0;
         film.prefix_sums(0, 0).after_sample(uint32_t(film.count(0, 0)) - 1, film.sum(0, 0), film.count(0, 0));
     }
-    // Mean 2, sample variance 2, variance of the mean 1; relMSE term 1 / (4 + 0.01). From the
-    // halves (1 and 3): (1 - 3)^2 / 4 = 1 too.
+    // Mean 2, sample variance 2, variance of the mean 1. From the halves (1 and 3): (1 - 3)^2 / 4 = 1
+    // too. The relative error's value: the median of the neighbourhood's means (2 and pixel 1's 0)
+    // is 1, the smaller half's mean 1, so the relMSE term is 1 / (1 + 0.01).
     EXPECT_DOUBLE_EQ(variance_of_mean(film, 0, 0)[0], 1.0);
     EXPECT_DOUBLE_EQ(variance_of_mean_from_halves(film, 0, 0)[0], 1.0);
-    EXPECT_DOUBLE_EQ(relative_variance(film, 0, 0), 1.0 / 4.01);
-    EXPECT_DOUBLE_EQ(relative_variance_from_halves(film, 0, 0), 1.0 / 4.01);
+    EXPECT_DOUBLE_EQ(relative_error_scale(film, 0, 0)[0], 1.0);
+    EXPECT_DOUBLE_EQ(relative_variance(film, 0, 0), 1.0 / 1.01);
+    EXPECT_DOUBLE_EQ(relative_variance_from_halves(film, 0, 0), 1.0 / 1.01);
     // A third sample, 2: the halves are still those of the first two (the last power of two), the
     // estimate scaled to three samples: 1 * 2 / 3.
     add_to_sum(film.sum(0, 0), Rgb(2.0f, 2.0f, 2.0f));
@@ -174,9 +179,9 @@ TEST(PixelStatistics, RelativeVarianceAndRelmseFollowTheBenchmarkDefinition) {
     film.prefix_sums(0, 0).after_sample(2, film.sum(0, 0), film.count(0, 0));
     EXPECT_DOUBLE_EQ(variance_of_mean_from_halves(film, 0, 0)[0], 2.0 / 3.0);
     EXPECT_DOUBLE_EQ(variance_of_mean(film, 0, 0)[0], 1.0 / 3.0);  // sample variance 1, over 3
-    EXPECT_TRUE(std::isinf(relative_variance(film, 1, 0)));  // no samples yet
+    EXPECT_TRUE(std::isinf(relative_variance(film, 1, 0)));        // no samples yet
     EXPECT_TRUE(std::isinf(estimated_relmse(film)));
-    EXPECT_DOUBLE_EQ(estimated_relmse(film, {PixelBounds{0, 0, 1, 1}}), 2.0 / 3.0 / 4.01);  // from the halves
+    EXPECT_DOUBLE_EQ(estimated_relmse(film, {PixelBounds{0, 0, 1, 1}}), 2.0 / 3.0 / 1.01);  // from the halves
     const SppSummary spp = spp_summary(film);
     EXPECT_EQ(spp.min, 0.0);
     EXPECT_EQ(spp.max, 3.0);
@@ -186,6 +191,110 @@ TEST(PixelStatistics, RelativeVarianceAndRelmseFollowTheBenchmarkDefinition) {
 }
 
 // The statistics travel with the film's values (what checkpoints, shard parts and MPI carry).
+// Adds `samples` (the same value in r, g and b, or `colour` times it) to pixel (x, y).
+void add_samples(Film& film, int x, int y, const std::vector<float>& samples, Rgb colour = Rgb(1.0f, 1.0f, 1.0f)) {
+    for (const float value : samples) {
+        const Rgb v(colour.r * value, colour.g * value, colour.b * value);
+        add_to_sum(film.sum(x, y), v);
+        add_square_to_sum(film.squares(x, y), v);
+        film.count(x, y) += 1.0;
+        film.prefix_sums(x, y).after_sample(uint32_t(film.count(x, y)) - 1, film.sum(x, y), film.count(x, y));
+    }
+}
+
+// A film whose pixels all hold `count` samples of `value`.
+Film uniform_film(int width, int height, int count, float value) {
+    Film film(width, height, false, {}, true);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) add_samples(film, x, y, std::vector<float>(size_t(count), value));
+    return film;
+}
+
+// One rare bright sample (a caustic's first find, a firefly) in a pixel of a dim region: over the
+// pixel's own mean its relative error would be below 1 whatever the sample; over the region's value
+// (what a converged reference has there) it is the large error the pixel really has.
+TEST(PixelStatistics, AFireflyDoesNotRaiseTheValueItsErrorIsRelativeTo) {
+    Film film(3, 3, false, {}, true);
+    std::vector<float> dim(16, 0.25f), firefly = dim;
+    firefly[9] = 48.0f;  // in the second half of the 16 samples
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 3; ++x) add_samples(film, x, y, x == 1 && y == 1 ? firefly : dim);
+    // Neighbourhood medians: 0.25 (eight of nine means); halves 0.25 and (7 * 0.25 + 48) / 8.
+    EXPECT_DOUBLE_EQ(relative_error_scale(film, 1, 1)[1], 0.25);
+    const double b = (7.0 * 0.25 + 48.0) / 8.0, v = (b - 0.25) * (b - 0.25) / 4.0;
+    EXPECT_DOUBLE_EQ(variance_of_mean_from_halves(film, 1, 1)[0], v);
+    EXPECT_DOUBLE_EQ(relative_variance_from_halves(film, 1, 1), v / (0.25 * 0.25 + kRelativeErrorEpsilon));
+    // Control: over the pixel's own mean the same variance is a relative error below 1.
+    const double own_mean = (15.0 * 0.25 + 48.0) / 16.0;
+    EXPECT_LT(v / (own_mean * own_mean + kRelativeErrorEpsilon), 1.0);
+    EXPECT_GT(relative_variance_from_halves(film, 1, 1), 100.0);
+    // The neighbours' own values are unmoved: their medians hold 0.25 (and one 3.2).
+    EXPECT_DOUBLE_EQ(relative_error_scale(film, 0, 0)[0], 0.25);
+}
+
+// A bright line one pixel wide between dark rows: the neighbourhood's median is dark, but both
+// halves of the line's pixels are bright, so the line keeps its own value.
+TEST(PixelStatistics, AThinBrightLineKeepsItsOwnValue) {
+    Film film(3, 5, false, {}, true);
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 3; ++x) add_samples(film, x, y, std::vector<float>(8, y == 2 ? 5.0f : 0.0f));
+    EXPECT_DOUBLE_EQ(relative_error_scale(film, 1, 2)[2], 5.0);
+    EXPECT_DOUBLE_EQ(relative_error_scale(film, 1, 0)[2], 0.0);  // dark rows stay dark
+    // Next to the line: six dark means of nine, so the median is dark.
+    EXPECT_DOUBLE_EQ(relative_error_scale(film, 1, 1)[2], 0.0);
+}
+
+// A block's relative errors read only its own pixels, so every renderer holding a tile decides alike.
+TEST(PixelStatistics, NeighboursAreReadOnlyInsideTheErrorBlock) {
+    Film film = uniform_film(16, 8, 4, 1.0f);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 8; x < 16; ++x) add_samples(film, x, y, std::vector<float>(4, 99.0f));  // mean 50
+    EXPECT_DOUBLE_EQ(relative_error_scale(film, 7, 3)[0], 1.0);
+    EXPECT_DOUBLE_EQ(relative_error_scale(film, 8, 3)[0], 50.0);
+    const PixelBounds block = error_block(film, 7, 3);
+    EXPECT_EQ(block.x0, 0);
+    EXPECT_EQ(block.x1, 8);
+    EXPECT_EQ(block.y1, 8);
+    const Film odd(20, 10, false, {}, true);
+    const PixelBounds edge = error_block(odd, 17, 9);  // clipped to the film
+    EXPECT_EQ(edge.x0, 16);
+    EXPECT_EQ(edge.y0, 8);
+    EXPECT_EQ(edge.x1, 20);
+    EXPECT_EQ(edge.y1, 10);
+}
+
+// Spectral renders give negative channel values (wavelengths outside the gamut): the value's
+// magnitude is what is squared.
+TEST(PixelStatistics, NegativeChannelValuesCountByTheirMagnitude) {
+    Film film(2, 2, false, {}, true);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x) add_samples(film, x, y, std::vector<float>(4, 1.0f), Rgb(-0.5f, 0.5f, 2.0f));
+    const PixelSum scale = relative_error_scale(film, 0, 1);
+    EXPECT_DOUBLE_EQ(scale[0], 0.5);
+    EXPECT_DOUBLE_EQ(scale[1], 0.5);
+    EXPECT_DOUBLE_EQ(scale[2], 2.0);
+}
+
+// The neighbourhood's median, by its fixed network for nine values and by selection at the edges:
+// one sample per pixel (no halves yet), the means a permutation of 1..9, so the centre's value is 5
+// whatever the order; at a corner, four pixels, the mean of the middle two.
+TEST(PixelStatistics, TheNeighbourhoodMedianIsTheMiddleValueInAnyOrder) {
+    std::array<int, 9> values{1, 2, 3, 4, 5, 6, 7, 8, 9};
+    int checked = 0;
+    for (int step = 0; std::next_permutation(values.begin(), values.end()); ++step) {
+        if (step % 997 != 0) continue;  // 364 of the 362880 orders
+        Film film(3, 3, false, {}, true);
+        for (int i = 0; i < 9; ++i) add_samples(film, i % 3, i / 3, {float(values[size_t(i)])});
+        ASSERT_DOUBLE_EQ(relative_error_scale(film, 1, 1)[0], 5.0) << "order " << step;
+        const double corner[] = {double(values[0]), double(values[1]), double(values[3]), double(values[4])};
+        std::vector<double> sorted(std::begin(corner), std::end(corner));
+        std::sort(sorted.begin(), sorted.end());
+        ASSERT_DOUBLE_EQ(relative_error_scale(film, 0, 0)[0], 0.5 * (sorted[1] + sorted[2])) << "order " << step;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 364);
+}
+
 TEST(PixelStatistics, RegionsCarryTheStatistics) {
     Film film(3, 2, true, {}, true);
     EXPECT_EQ(film.values_per_pixel(), 17);
@@ -209,5 +318,5 @@ TEST(PixelStatistics, RegionsCarryTheStatistics) {
     EXPECT_EQ(copy.prefix_sums(2, 1).weight[1], 17.0f);
 }
 
-}  // namespace
+}  // namespace CANDELA_UNITY_ID
 }  // namespace candela

@@ -28,6 +28,25 @@
 // sequence lies in opposite halves of the first dimension, so those two half means estimate
 // different integrals and their difference never goes to zero.)
 //
+// The denominator: relative error divides a pixel's variance by its value squared, and the value the
+// pixel's own samples give is raised by the very samples that make its error. A pixel with one rare
+// bright sample (a caustic's first find, a firefly in a dark corner) has a variance about its own
+// mean squared, so over its own mean its relative error is at most about 1 whatever the sample's
+// size, while over the true value (what bench/ and the user's reference divide by) it can be
+// thousands: the image estimate was 18x below the truth on cornell-glass at 16 spp, 260x on the
+// prism at 4 spp and 5900x on veach-bidir at 16 spp (bench/RESULTS.md, issue 28). So the value
+// squared is the larger of two estimates of it that one rare sample does not raise: the median of
+// the means of the pixel and its eight neighbours (a pixel's firefly is one of nine, and a smooth
+// region's median is its value), and the smaller of the two halves' means (a bright thin line one
+// pixel wide, whose neighbours are dark, has both halves bright once it is found). Neighbours are
+// read only inside the pixel's aligned kErrorBlockSize block, so that an 8x8 block's estimate
+// needs only its own pixels: any renderer holding a tile (a thread, an MPI rank, a shard) makes the
+// same decisions, and nothing about the film's layout or the statistics kept per pixel changed.
+// Measured against converged references (64x64, seed 5): true / estimate at 4 to 2048 spp is
+// 0.58-1.02 on cornell-glass, 0.007-0.75 on the prism (spectral; the estimate is conservative
+// where few samples leave the channels' medians near 0) and 0.35-1.35 on veach-bidir; on scenes
+// without rare paths the two denominators agree once a pixel's noise is below its value.
+//
 // For a weighted film (tabulated filters) the values summed are value * weight and the pixel's
 // image value is their sum over the weight sum; the estimate treats the weight sum as exact.
 #include <cstdint>
@@ -49,11 +68,32 @@ PixelSum variance_of_mean(const Film& film, int x, int y);
 // The same from the halves (above); 0 with fewer than two samples.
 PixelSum variance_of_mean_from_halves(const Film& film, int x, int y);
 
+// The side of the aligned square blocks of pixels inside which a pixel's neighbours are read
+// (above); render/adaptive_sampling.h's blocks are these.
+inline constexpr int kErrorBlockSize = 8;
+
+// The aligned block of kErrorBlockSize pixels holding pixel (x, y), clipped to the film.
+PixelBounds error_block(const Film& film, int x, int y);
+
+// Pixel (x, y)'s value as the relative error sees it, per channel (above): the larger of the
+// magnitudes of the median of its 3x3 neighbourhood's means (within its error_block) and of the
+// smaller of its two halves' means. Films with statistics only.
+PixelSum relative_error_scale(const Film& film, int x, int y);
+
 // Pixel (x, y)'s estimated relative mean squared error: the mean over r, g, b of
-// variance_of_mean / (value^2 + kRelativeErrorEpsilon); infinite with fewer than two samples.
+// variance_of_mean / (relative_error_scale^2 + kRelativeErrorEpsilon); infinite with fewer than two
+// samples.
 double relative_variance(const Film& film, int x, int y);
 // The same from the halves.
 double relative_variance_from_halves(const Film& film, int x, int y);
+
+// Which estimate of the variance of the mean a relative variance is made from (above).
+enum class VarianceEstimate { kSquares, kHalves };
+
+// relative_variance (kSquares) or relative_variance_from_halves (kHalves) of every pixel of
+// `bounds`, row-major, into `out`: the neighbours' means computed once, for whole blocks and images.
+void relative_variances(const Film& film, const PixelBounds& bounds, VarianceEstimate estimate,
+                        std::vector<double>& out);
 
 // The mean of relative_variance_from_halves over the pixels of `regions` (the whole film when
 // empty), summed in a fixed order: the estimated relMSE of the image. Infinite while a pixel has

@@ -1,6 +1,7 @@
 #include "candela/render/adaptive_sampling.h"
 
 #include <cmath>
+#include <vector>
 
 #include "candela/film/film.h"
 #include "candela/film/pixel_statistics.h"
@@ -13,8 +14,8 @@ std::vector<PixelBounds> tile_blocks(const Tile& tile) {
     constexpr int b = kAdaptiveBlockSize;
     for (int y = tile.y0 / b * b; y < tile.y1; y += b)
         for (int x = tile.x0 / b * b; x < tile.x1; x += b)
-            blocks.push_back({std::max(x, tile.x0), std::max(y, tile.y0), std::min(x + b, tile.x1),
-                              std::min(y + b, tile.y1)});
+            blocks.push_back(
+                {std::max(x, tile.x0), std::max(y, tile.y0), std::min(x + b, tile.x1), std::min(y + b, tile.y1)});
     return blocks;
 }
 
@@ -28,9 +29,10 @@ bool block_active(const Film& film, const PixelBounds& block, uint32_t begin,
     if (!adaptive) return true;
     // Relative error below the threshold: relative variance below its square.
     const double limit = double(adaptive->threshold) * double(adaptive->threshold);
-    for (int y = block.y0; y < block.y1; ++y)
-        for (int x = block.x0; x < block.x1; ++x)
-            if (!(relative_variance(film, x, y) < limit)) return true;
+    std::vector<double> relative;
+    relative_variances(film, block, VarianceEstimate::kSquares, relative);
+    for (const double r : relative)
+        if (!(r < limit)) return true;
     return false;
 }
 

@@ -22,14 +22,16 @@
 #include <vector>
 
 #include "candela/film/film_settings.h"
-#include "candela/scene/render_settings.h"
+#include "candela/film/pixel_statistics.h"
 #include "candela/render/tile.h"
+#include "candela/scene/render_settings.h"
 
 namespace candela {
 
 class Film;
 
-inline constexpr int kAdaptiveBlockSize = 8;
+// The blocks whose pixels' relative errors read neighbours only inside them (film/pixel_statistics.h).
+inline constexpr int kAdaptiveBlockSize = kErrorBlockSize;
 // The first decision point when only --target-error asks for them.
 inline constexpr uint32_t kFirstTargetCheck = 16;
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "candela/film/film.h"
 #include "candela/film/pixel_statistics.h"
@@ -21,10 +22,13 @@ struct BlockError {
 
 BlockError block_error(const Film& film, const PixelBounds& block) {
     BlockError b;
+    std::vector<double> relative;
+    relative_variances(film, block, VarianceEstimate::kHalves, relative);
+    size_t i = 0;
     for (int y = block.y0; y < block.y1; ++y)
         for (int x = block.x0; x < block.x1; ++x) {
             const double n = film.count(x, y);
-            const double r = relative_variance_from_halves(film, x, y);
+            const double r = relative[i++];
             b.error += r;
             b.per_sample += r * n;
             b.work += (n > 0.0 ? film.rays(x, y) / n : 0.0) + kSampleOverheadRays;

@@ -39,8 +39,9 @@ void check_start_state(const FrameRenderer& frame, const RenderState& start, boo
     if (!(start.film.aovs() == frame.aovs()))
         throw RenderError("render: the start state's AOV layers are not the ones the scene asks for");
     if (statistics && !start.film.has_statistics())
-        throw RenderError("render: the start state lacks the per-pixel statistics (sums of squares, sample counts) "
-                          "that adaptive sampling and a target error need");
+        throw RenderError(
+            "render: the start state lacks the per-pixel statistics (sums of squares, sample counts) "
+            "that adaptive sampling and a target error need");
 }
 
 }  // namespace
@@ -106,14 +107,23 @@ uint64_t PassEngine::update_active() {
     return active;
 }
 
-// After a pass (or at the start), for a film with statistics: the image's estimated relMSE; at a
-// decision point, whether the render is done because the estimate met the target or every block
+// The image's estimated relMSE at the film's count, shown on the progress bar.
+void PassEngine::update_estimate() {
+    relmse_estimate_ = estimated_relmse(state_.film, regions_);
+    estimate_samples_ = state_.samples_done;
+    progress_->set_note(fmt::format("relMSE ~{:.3g}", *relmse_estimate_));
+}
+
+// After a pass (or at the start), for a film with statistics, at a decision point: the image's
+// estimated relMSE, and whether the render is done because the estimate met the target or every block
 // stopped, else the target's allocation scale for the passes to the next decision point.
 bool PassEngine::decide() {
     if (!state_.film.has_statistics() || state_.samples_done == 0) return false;
-    relmse_estimate_ = estimated_relmse(state_.film, regions_);
-    progress_->set_note(fmt::format("relMSE ~{:.3g}", *relmse_estimate_));
+    // The estimate reads every pixel's neighbourhood (film/pixel_statistics.h), which costs as much
+    // as a few samples of a simple scene at a million pixels: it is made where it is needed, at the
+    // decision points, and once at the end for the summary (run), not after every pass.
     if (!is_decision_point(state_.samples_done, first_decision_)) return false;
+    update_estimate();
     if (target_ && *relmse_estimate_ <= options_.target_error) return true;
     if (target_)
         target_scale_ = target_allocation_scale(state_.film, tiles_, state_.samples_done, options_.target_error);
@@ -141,9 +151,10 @@ RenderResult PassEngine::run(PassExecutor& executor) {
                 seconds_left = std::chrono::duration<double>(*options_.deadline - Clock::now()).count();
             uint32_t remaining = spp_ - state_.samples_done;
             if (decisions_)  // decisions are made at fixed counts, so passes end there
-                remaining = std::min(remaining, next_decision_point(state_.samples_done, first_decision_) -
-                                                    state_.samples_done);
-            const uint32_t n = next_pass_spp(previous, remaining, options_.pass_seconds, seconds_left, options_.pass_spp);
+                remaining = std::min(remaining,
+                                     next_decision_point(state_.samples_done, first_decision_) - state_.samples_done);
+            const uint32_t n =
+                next_pass_spp(previous, remaining, options_.pass_seconds, seconds_left, options_.pass_spp);
             if (n == 0) {  // not one more sample per pixel fits before the deadline
                 abandon(RenderEnd::kDeadline);
                 break;
@@ -151,8 +162,12 @@ RenderResult PassEngine::run(PassExecutor& executor) {
             if (next_.width() != frame_.width() || next_.height() != frame_.height())
                 next_ = Film(frame_.width(), frame_.height(), frame_.weighted(), frame_.aovs(),
                              state_.film.has_statistics());
-            const PassWork pass{uint32_t(stats.passes + 1), state_.samples_done, state_.samples_done + n, &state_.film,
-                                &next_, target_scale_};
+            const PassWork pass{uint32_t(stats.passes + 1),
+                                state_.samples_done,
+                                state_.samples_done + n,
+                                &state_.film,
+                                &next_,
+                                target_scale_};
             const Clock::time_point pass_start = Clock::now();
             const uint64_t dropped = executor.run_pass(pass, *this);
             if (end_.load() != RenderEnd::kComplete) break;  // `next_` is a mix of tiles: dropped
@@ -166,14 +181,15 @@ RenderResult PassEngine::run(PassExecutor& executor) {
             converged_ = decide();
         }
         stats.rays = executor.finish(end_.load(), state_);
+        if (state_.film.has_statistics() && state_.samples_done > 0 && estimate_samples_ != state_.samples_done)
+            update_estimate();  // the summary's, where the render did not end at a decision point
         progress_ = nullptr;
     }
     result.end = end_.load();
     stats.render_seconds = seconds_since(render_start);
     stats.dropped_samples = state_.dropped_samples - start_dropped;
-    stats.samples = state_.film.has_statistics()
-                        ? uint64_t(spp_summary(state_.film, regions_).total - samples_before)
-                        : pixels_ * (state_.samples_done - start_samples);
+    stats.samples = state_.film.has_statistics() ? uint64_t(spp_summary(state_.film, regions_).total - samples_before)
+                                                 : pixels_ * (state_.samples_done - start_samples);
     stats.relmse_estimate = relmse_estimate_;
     stats.converged = converged_;
     result.image = state_.film.resolve(state_.samples_done);

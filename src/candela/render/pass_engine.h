@@ -79,6 +79,7 @@ class PassEngine {
 
   private:
     bool decide();
+    void update_estimate();
     uint64_t update_active();
 
     const FrameRenderer& frame_;
@@ -97,6 +98,7 @@ class PassEngine {
     std::optional<double> target_scale_;
     std::vector<uint64_t> tile_active_;  // decisions: each tile's pixels that take samples
     std::optional<double> relmse_estimate_;
+    uint32_t estimate_samples_ = 0;  // the film's count when relmse_estimate_ was made
     bool converged_ = false;
     std::atomic<RenderEnd> end_{RenderEnd::kComplete};
     ProgressBar* progress_ = nullptr;
