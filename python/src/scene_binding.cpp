@@ -31,15 +31,14 @@ std::shared_ptr<const SceneDocument> load_file(const fs::path& file) {
         auto imported = std::make_shared<pbrt::ImportedScene>(pbrt::import_pbrt_file(file));
         scene->document = imported->document;
         scene->imported = std::move(imported);
+        scene->load(LoadOptions{});  // bad input is an error of load(), not of the first render
     } else {
         scene->text = read_text_file(file);
-        // The loader's own parse reports bad JSON with its location; the document's parse after a
-        // load that succeeded cannot fail.
+        // The loader's own parse reports bad JSON with its location; after a load that succeeded,
+        // the document's parse cannot fail.
         scene->load(LoadOptions{});
         scene->document = Json::parse(*scene->text);
-        return scene;
     }
-    scene->load(LoadOptions{});  // bad input is an error of load(), not of the first render
     return scene;
 }
 
@@ -133,23 +132,40 @@ Json from_python(py::handle value, const std::string& pointer) {
 }
 
 void bind_scene(py::module_& m) {
-    py::class_<SceneDocument, std::shared_ptr<SceneDocument>>(m, "Scene")
+    py::class_<SceneDocument, std::shared_ptr<SceneDocument>>(
+        m, "Scene",
+        "A scene: its JSON document (docs/SCENE_FORMAT.md) and what loading it needs besides.\n\n"
+        "Immutable: change a scene by editing its dict and making a new one,\n"
+        "Scene.from_dict(d, like=scene).")
         .def_static(
             "from_dict",
             [](const py::dict& d, std::optional<fs::path> folder, std::shared_ptr<const SceneDocument> like) {
                 return std::const_pointer_cast<SceneDocument>(from_dict(d, std::move(folder), like));
             },
-            py::arg("d"), py::kw_only(), py::arg("folder") = py::none(), py::arg("like") = py::none())
-        .def("to_dict", [](const SceneDocument& s) { return to_python(s.document); })
-        .def_property_readonly("file", [](const SceneDocument& s) -> std::optional<std::string> {
-            if (s.text || s.imported) return s.file.string();
-            return std::nullopt;
-        })
+            py::arg("d"), py::kw_only(), py::arg("folder") = py::none(), py::arg("like") = py::none(),
+            "A scene from a scene document (a dict as to_dict returns, or one written by hand).\n\n"
+            "folder: where relative file names (meshes, images) resolve; default: like's folder, else the\n"
+            "current folder. like: a scene whose folder, and for a pbrt-v4 scene whose meshes held in\n"
+            "memory, the document may use; while d equals like's document, errors point at like's file.\n"
+            "Raises SceneError (located by JSON pointer) for a document that does not load, TypeError\n"
+            "for a value no JSON document holds.")
+        .def("to_dict", [](const SceneDocument& s) { return to_python(s.document); },
+             "The scene document as a new dict (lists, str, float, int, bool, None): edit it freely.")
+        .def_property_readonly(
+            "file",
+            [](const SceneDocument& s) -> std::optional<std::string> {
+                if (s.text || s.imported) return s.file.string();
+                return std::nullopt;
+            },
+            "The file it was loaded from; None for a scene made from a dict.")
         .def("__repr__", [](const SceneDocument& s) {
             return fmt::format("<candela.Scene {}>", s.text || s.imported ? s.file.string() : "from a dict");
         });
-    m.def("load", [](const fs::path& file) { return std::const_pointer_cast<SceneDocument>(load_file(file)); },
-          py::arg("path"));
+    m.def(
+        "load", [](const fs::path& file) { return std::const_pointer_cast<SceneDocument>(load_file(file)); },
+        py::arg("path"),
+        "Loads a scene file: candela's JSON, or pbrt-v4's (.pbrt, .pbrt.gz), with all it names.\n\n"
+        "Raises SceneError with the file, line and column of the problem, as the CLI reports it.");
 }
 
 }  // namespace candela::python

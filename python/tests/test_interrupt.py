@@ -25,7 +25,7 @@ def test_interrupt_raises_keyboard_interrupt_and_rendering_goes_on(interrupt):
     start = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
         candela.render(scene, **LONG)
-    assert time.monotonic() - start < 3.0  # stopped at the next tile, not at the end
+    assert time.monotonic() - start < 5.0  # stopped at the next tile, not minutes later at the end
     timer.join()
     # The next render is whole and the same as ever.
     a = candela.render(scene, spp=4, threads=2)

@@ -48,4 +48,6 @@ def test_python_runs_while_a_render_does():
         stop.set()
         ticker.join()
     assert image.stats["end"] == "time_limit"
-    assert len(ticks) >= 20  # at 10 ms each over 0.5 s: the GIL was free
+    # 10 ms apart over 0.5 s: about 50 while the GIL is free, one or two if the render held it (at least
+    # 5 leaves room for a loaded machine)
+    assert len(ticks) >= 5
