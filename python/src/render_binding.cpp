@@ -13,6 +13,7 @@
 #include <csignal>
 #include <cstring>
 #include <thread>
+#include <xmmintrin.h>
 
 #include "bindings.h"
 #include "candela/render/job/job.h"
@@ -119,6 +120,20 @@ RenderOverrides overrides_of(const Keywords& k) {
     return o;
 }
 
+// The render threads flush denormals to zero (geometry/accelerator.h, enable_flush_denormals), and
+// the caller's thread is one of them (it takes tiles too): its mode (Python's, numpy's) is given
+// back as it was when the job returns or throws.
+class FloatingPointMode {
+  public:
+    FloatingPointMode() : csr_(_mm_getcsr()) {}
+    ~FloatingPointMode() { _mm_setcsr(csr_); }
+    FloatingPointMode(const FloatingPointMode&) = delete;
+    FloatingPointMode& operator=(const FloatingPointMode&) = delete;
+
+  private:
+    unsigned int csr_;
+};
+
 // The caller's side of a render, on the caller's thread: the render job runs there (with the GIL
 // released), and the job's stop function, which every render thread asks before each tile, takes
 // the GIL back there a few times a second to run Python's signal handlers (Ctrl-C). TBB's calling
@@ -211,6 +226,7 @@ py::tuple render(const std::shared_ptr<const SceneDocument>& scene, const Keywor
     };
     RenderJobResult result;
     {
+        const FloatingPointMode kept;
         py::gil_scoped_release release;
         result = run_render_job(o);
     }

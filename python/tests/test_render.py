@@ -98,3 +98,11 @@ def test_an_error_in_the_progress_callback_stops_the_render():
     scene = candela.Scene.from_dict(tiny_document())
     with pytest.raises(RuntimeError, match="from the callback"):
         candela.render(scene, spp=1 << 24, resolution=(64, 64), progress=fail)
+
+
+def test_pythons_floating_point_mode_is_kept():
+    """The render threads flush denormals to zero; the caller's thread, which renders too, not after."""
+    import sys
+    candela.render(candela.Scene.from_dict(tiny_document()), spp=4, threads=1)
+    assert sys.float_info.min / 2 > 0  # a denormal, not flushed to zero
+    assert np.float32(1e-38) / np.float32(10) > 0
