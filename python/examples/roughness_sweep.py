@@ -2,8 +2,8 @@
 """Sweeps a material parameter and saves the renders side by side as a matplotlib figure.
 
 The material spheres scene (scenes/material-spheres) with every gold sphere's GGX roughness set to
-each value in turn, rendered small, tone mapped as the scene says (ACES), and plotted one above
-the other. From the repository root:
+each value in turn, rendered small, tone mapped as the scene says (ACES), and plotted side by
+side. From the repository root:
 
     PYTHONPATH=build/python python3 python/examples/roughness_sweep.py -o roughness_sweep.png
 
@@ -33,7 +33,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("-o", "--output", default="roughness_sweep.png")
     parser.add_argument("--spp", type=int, default=32)
-    parser.add_argument("--width", type=int, default=320)
+    parser.add_argument("--width", type=int, default=320, help="of each render, in pixels")
+    parser.add_argument("--dpi", type=int, default=100, help="of the figure")
     parser.add_argument("--roughness", type=float, nargs="+", default=[0.01, 0.05, 0.15, 0.4])
     args = parser.parse_args()
 
@@ -49,13 +50,13 @@ def main():
         images.append(image)
         print(f"roughness {alpha}: {image.stats['render_seconds']:.2f} s, mean {float(np.mean(image)):.4f}")
 
-    fig, axes = plt.subplots(len(images), 1, figsize=(6, 2.6 * len(images)), squeeze=False)
-    for ax, alpha, image in zip(axes[:, 0], args.roughness, images):
+    fig, axes = plt.subplots(1, len(images), figsize=(3.2 * len(images), 1.9), squeeze=False)
+    for ax, alpha, image in zip(axes[0], args.roughness, images):
         ax.imshow(display(image))
-        ax.set_title(f"gold spheres, GGX roughness (alpha) = {alpha}")
+        ax.set_title(f"gold roughness {alpha}", fontsize=9)
         ax.axis("off")
     fig.tight_layout()
-    fig.savefig(args.output, dpi=120)
+    fig.savefig(args.output, dpi=args.dpi)
     print(f"wrote {args.output}")
 
 
