@@ -92,6 +92,11 @@ def test_progress_callback_sees_fractions_up_to_one():
     assert seen and seen[-1] == 1.0 and seen == sorted(seen) and all(0 <= f <= 1 for f in seen)
 
 
+def test_progress_true_shows_a_bar_and_changes_no_bits():
+    scene = candela.Scene.from_dict(tiny_document())  # a tqdm bar if tqdm is installed, else the library's
+    assert np.array_equal(candela.render(scene, spp=16, progress=True), candela.render(scene, spp=16))
+
+
 def test_an_error_in_the_progress_callback_stops_the_render():
     def fail(fraction):
         raise RuntimeError("from the callback")
