@@ -7,17 +7,17 @@
 #include <fmt/format.h>
 #include <stdlib.h>
 
+#include <cstring>
 #include <fstream>
 #include <iterator>
-#include <cstring>
 #include <map>
 
 #include "bindings.h"
 #include "candela/core/error.h"
 #include "candela/film/aov_layers.h"
-#include "candela/render/job/render_overrides.h"
 #include "candela/image/image_io.h"
 #include "candela/image/image_layers.h"
+#include "candela/render/job/render_overrides.h"
 #include "candela/scene/enum_names.h"
 
 namespace candela::python {
@@ -61,9 +61,10 @@ Image image_of(const FloatArray& a, const std::string& what) {
     if (!(grey || (a.ndim() == 3 && a.shape(2) == 3)) || a.shape(0) < 1 || a.shape(1) < 1) {
         std::string shape;
         for (py::ssize_t i = 0; i < a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(a.shape(i));
-        throw py::value_error(fmt::format("{}: expected an array of shape (height, width, 3), (height, width, 1) "
-                                          "or (height, width), got shape ({})",
-                                          what, shape));
+        throw py::value_error(
+            fmt::format("{}: expected an array of shape (height, width, 3), (height, width, 1) "
+                        "or (height, width), got shape ({})",
+                        what, shape));
     }
     Image image(int(a.shape(1)), int(a.shape(0)));
     const float* from = a.data();
@@ -84,19 +85,24 @@ DisplayEncoding display_of(const std::optional<py::dict>& d) {
         if (k == "tonemap") {
             const std::string name = value.cast<std::string>();
             const std::optional<Tonemap> t = parse_tonemap(name);
-            if (!t) bad_flag(fmt::format("tonemap: unknown tone map \"{}\"; expected one of: {}", name, names_list(tonemap_names())));
+            if (!t)
+                bad_flag(fmt::format("tonemap: unknown tone map \"{}\"; expected one of: {}", name,
+                                     names_list(tonemap_names())));
             e.tonemap = *t;
         } else if (k == "transfer") {
             const std::string name = value.cast<std::string>();
             const std::optional<Transfer> t = parse_transfer(name);
-            if (!t) bad_flag(fmt::format("transfer: unknown transfer \"{}\"; expected one of: {}", name, names_list(transfer_names())));
+            if (!t)
+                bad_flag(fmt::format("transfer: unknown transfer \"{}\"; expected one of: {}", name,
+                                     names_list(transfer_names())));
             e.transfer = *t;
         } else if (k == "exposure") {
             e.exposure = value.cast<float>();
         } else if (k == "gamma") {
             e.gamma = value.cast<float>();
         } else {
-            bad_flag(fmt::format("display: unknown key \"{}\"; expected one of: tonemap, exposure, transfer, gamma", k));
+            bad_flag(
+                fmt::format("display: unknown key \"{}\"; expected one of: tonemap, exposure, transfer, gamma", k));
         }
     }
     return e;

@@ -7,13 +7,13 @@
 
 #include <fmt/format.h>
 
+#include <xmmintrin.h>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstring>
 #include <thread>
-#include <xmmintrin.h>
 
 #include "bindings.h"
 #include "candela/render/job/job.h"
@@ -111,7 +111,8 @@ RenderOverrides overrides_of(const Keywords& k) {
         AovLayers layers;
         for (const std::string& name : *k.aovs) {
             const std::optional<AovLayer> layer = parse_aov_layer(name);
-            if (!layer) bad_flag(fmt::format("aovs: unknown AOV layer \"{}\"; expected one of: {}", name, kAovLayerNames));
+            if (!layer)
+                bad_flag(fmt::format("aovs: unknown AOV layer \"{}\"; expected one of: {}", name, kAovLayerNames));
             if (layers.has(*layer)) bad_flag(fmt::format("aovs: AOV layer \"{}\" is listed twice", name));
             layers.add(*layer);
         }
@@ -250,11 +251,18 @@ void bind_render(py::module_& m) {
         [](const std::shared_ptr<SceneDocument>& scene, std::optional<int> spp, std::optional<uint64_t> seed,
            std::optional<bool> spectral, std::optional<std::pair<int, int>> resolution, int threads,
            std::optional<std::vector<std::string>> aovs, std::optional<double> target_error,
-           std::optional<double> time_limit, std::optional<std::string> integrator,
-           std::optional<std::string> sampler, std::optional<std::function<void(double)>> progress,
-           bool progress_bar) {
-            const Keywords k{spp, seed, spectral, resolution, threads, std::move(aovs), target_error, time_limit,
-                             std::move(integrator), std::move(sampler)};
+           std::optional<double> time_limit, std::optional<std::string> integrator, std::optional<std::string> sampler,
+           std::optional<std::function<void(double)>> progress, bool progress_bar) {
+            const Keywords k{spp,
+                             seed,
+                             spectral,
+                             resolution,
+                             threads,
+                             std::move(aovs),
+                             target_error,
+                             time_limit,
+                             std::move(integrator),
+                             std::move(sampler)};
             return render(scene, k, std::move(progress), progress_bar);
         },
         py::arg("scene"), py::kw_only(), py::arg("spp") = py::none(), py::arg("seed") = py::none(),

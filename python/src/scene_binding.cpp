@@ -126,9 +126,10 @@ Json from_python(py::handle value, const std::string& pointer) {
         return out;
     }
     if (py::hasattr(value, "tolist")) return from_python(value.attr("tolist")(), pointer);  // numpy
-    throw py::type_error(fmt::format("{}: a scene document holds dicts, lists, str, float, int, bool and None, "
-                                     "not {}",
-                                     where(), py::repr(py::type::handle_of(value)).cast<std::string>()));
+    throw py::type_error(
+        fmt::format("{}: a scene document holds dicts, lists, str, float, int, bool and None, "
+                    "not {}",
+                    where(), py::repr(py::type::handle_of(value)).cast<std::string>()));
 }
 
 void bind_scene(py::module_& m) {
@@ -149,8 +150,9 @@ void bind_scene(py::module_& m) {
             "memory, the document may use; while d equals like's document, errors point at like's file.\n"
             "Raises SceneError (located by JSON pointer) for a document that does not load, TypeError\n"
             "for a value no JSON document holds.")
-        .def("to_dict", [](const SceneDocument& s) { return to_python(s.document); },
-             "The scene document as a new dict (lists, str, float, int, bool, None): edit it freely.")
+        .def(
+            "to_dict", [](const SceneDocument& s) { return to_python(s.document); },
+            "The scene document as a new dict (lists, str, float, int, bool, None): edit it freely.")
         .def_property_readonly(
             "file",
             [](const SceneDocument& s) -> std::optional<std::string> {

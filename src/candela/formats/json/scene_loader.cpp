@@ -353,7 +353,6 @@ void read_film(JsonCursor c, FilmSettings& film, const CameraSettings& camera, s
     c.reject_unknown_keys();
 }
 
-
 // pbrt-v4 warns the same way: a black image after hours of rendering is a poor way to find out.
 void warn_if_unlit(Scene& scene) {
     const IntegratorType t = scene.integrator.type;
@@ -430,8 +429,7 @@ std::string read_text_file(const std::filesystem::path& file) {
                          fmt::format("cannot open scene file: {}", std::strerror(errno)));
     std::ostringstream text;
     text << in.rdbuf();
-    if (in.bad())
-        throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "cannot read scene file");
+    if (in.bad()) throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "cannot read scene file");
     return std::move(text).str();
 }
 

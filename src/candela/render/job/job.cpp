@@ -155,13 +155,13 @@ RenderJobResult run_on_this_rank(const RenderJobOptions& o, [[maybe_unused]] con
     // The film is charged once its resolution is final (apply_and_check), when an override or a
     // checkpoint may change it; the loader still guards what it allocates itself.
     const bool resolution_final = !o.overrides.resolution && !o.resume;
-    const LoadOptions load_options{.memory_limit = limit, .meshes = nullptr, .source_map = {},
-                                   .charge_film = resolution_final};
+    const LoadOptions load_options{
+        .memory_limit = limit, .meshes = nullptr, .source_map = {}, .charge_film = resolution_final};
     Scene scene = o.load ? o.load(load_options) : load_scene_file(o.scene, load_options);
     out.load_seconds = seconds_since(o.started) - load_start;
     const std::vector<fs::path> outputs = image_outputs(o, scene);
-    out.checkpoint_file = o.shard          ? o.outputs.front()
-                          : o.checkpoint   ? *o.checkpoint
+    out.checkpoint_file = o.shard           ? o.outputs.front()
+                          : o.checkpoint    ? *o.checkpoint
                           : outputs.empty() ? fs::path()  // write_files false: no checkpoint
                                             : fs::path(outputs.front().string() + ".ckpt");
 
