@@ -9,6 +9,7 @@
 
 #include <xmmintrin.h>
 #include <algorithm>
+#include <cctype>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -16,6 +17,7 @@
 #include <thread>
 
 #include "bindings.h"
+#include "candela/core/error.h"
 #include "candela/render/job/job.h"
 #include "candela/scene/enum_names.h"
 
@@ -135,6 +137,18 @@ class FloatingPointMode {
     unsigned int csr_;
 };
 
+// The job names a bad value by the CLI's flag ("--time-limit: expected seconds > 0, got 0"); Python
+// names it by its keyword ("time_limit: ..."). Errors in files are left as they are.
+SceneError by_keyword(const SceneError& e) {
+    const std::string& m = e.message();
+    if (!e.where().file.empty() || m.rfind("--", 0) != 0) return e;
+    std::string keyword;
+    size_t i = 2;
+    for (; i < m.size() && (std::isalnum(static_cast<unsigned char>(m[i])) || m[i] == '-'); ++i)
+        keyword += m[i] == '-' ? '_' : m[i];
+    return SceneError(e.where(), keyword + m.substr(i));
+}
+
 // The caller's side of a render, on the caller's thread: the render job runs there (with the GIL
 // released), and the job's stop function, which every render thread asks before each tile, takes
 // the GIL back there a few times a second to run Python's signal handlers (Ctrl-C). TBB's calling
@@ -229,7 +243,11 @@ py::tuple render(const std::shared_ptr<const SceneDocument>& scene, const Keywor
     {
         const FloatingPointMode kept;
         py::gil_scoped_release release;
-        result = run_render_job(o);
+        try {
+            result = run_render_job(o);
+        } catch (const SceneError& e) {
+            throw by_keyword(e);
+        }
     }
     caller.rethrow();
     // Complete: 1 (the passes may have said less, where adaptive sampling or a target stopped early).
