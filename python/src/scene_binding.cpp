@@ -58,6 +58,7 @@ std::shared_ptr<const SceneDocument> from_dict(const py::dict& d, std::optional<
     }
     // A file name in no folder's listing: relative names resolve against `folder`, errors show none.
     if (folder) scene->file = *folder / "<dict>";
+    py::gil_scoped_release release;  // loading reads meshes and images: other threads run meanwhile
     scene->load(LoadOptions{});
     return scene;
 }
@@ -165,7 +166,7 @@ void bind_scene(py::module_& m) {
         });
     m.def(
         "load", [](const fs::path& file) { return std::const_pointer_cast<SceneDocument>(load_file(file)); },
-        py::arg("path"),
+        py::arg("path"), py::call_guard<py::gil_scoped_release>(),
         "Loads a scene file: candela's JSON, or pbrt-v4's (.pbrt, .pbrt.gz), with all it names.\n\n"
         "Raises SceneError with the file, line and column of the problem, as the CLI reports it.");
 }
