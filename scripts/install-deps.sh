@@ -13,6 +13,9 @@ packages=(
   libopenvdb-dev libboost-dev
   # Rendering one image on many machines (mpirun candela render, docs/CLUSTER.md).
   libopenmpi-dev openmpi-bin
+  # The Python module (python/, README.md "Python"): pybind11 for the extension; numpy for its
+  # arrays, pytest for its tests, matplotlib for its example.
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
   # The sanitizer and fuzzing build (scripts/sanitize.sh, scripts/fuzz.sh): clang 14, its
   # ASan/UBSan/libFuzzer runtimes (only recommended by clang, so named here) and
   # llvm-symbolizer for readable sanitizer reports.

@@ -68,9 +68,10 @@ struct DeltaLightSettings {
 struct Scene {
     std::filesystem::path file;  // the scene file, as given
     std::string output_file;     // film.filename: the default output image ("" for <scene name>.png)
-    // For a scene translated from another format (a pbrt-v4 file): the JSON document it was
-    // loaded from, and the hashes of the meshes it held in memory under file names, which the
-    // content hash (content_hash.h) reads instead of scene.file and those files.
+    // For a scene translated from another format (a pbrt-v4 file), or loaded from a document in
+    // memory (the Python module): the JSON document it was loaded from, and the hashes of the
+    // meshes it held in memory under file names, which the content hash (content_hash.h) reads
+    // instead of scene.file and those files.
     std::string translated_json;
     std::map<std::string, uint64_t> inline_file_hashes;
 

@@ -10,11 +10,13 @@
 #include <csignal>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "candela/core/error.h"
+#include "candela/formats/scene_file.h"
 #include "candela/render/job/shard_merge.h"
 #include "candela/scene/enum_names.h"
 #include "support/test_files.h"
@@ -214,6 +216,35 @@ TEST(RenderJob, StoppedBeforeTheFirstPassWritesNothing) {
     EXPECT_TRUE(r.images.empty());
     EXPECT_FALSE(r.checkpoint);
     EXPECT_FALSE(fs::exists(dir / "x.pfm"));
+}
+
+// The Python module's way in: a caller's loader in place of the file, and no files written, with
+// the bits of the job that reads the file and writes the image, a time-limited stop included.
+TEST(RenderJob, ACallersLoaderAndNoFilesGiveTheFilesBits) {
+    const fs::path dir = fresh_dir("job_in_memory");
+    const RenderJobResult from_file = run_render_job(small_job(dir, "file.pfm", 3));
+    RenderJobOptions o = small_job(dir, "never.pfm", 3);
+    o.scene = dir / "not-read.json";
+    o.write_files = false;
+    o.checkpoint_every = 1e-9;  // a periodic checkpoint is not written either
+    int loads = 0;
+    o.load = [&loads](const LoadOptions& options) {
+        ++loads;
+        EXPECT_FALSE(options.charge_film);  // the resolution is an override: charged once it is set
+        return load_scene_file(kCornell, options);
+    };
+    const RenderJobResult in_memory = run_render_job(o);
+    EXPECT_EQ(loads, 1);
+    EXPECT_TRUE(same_bits(in_memory.render.image, from_file.render.image));
+    EXPECT_TRUE(in_memory.images.empty());
+    EXPECT_FALSE(in_memory.checkpoint);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);  // file.pfm only
+    // A stopped render writes no checkpoint either (the file-writing job would).
+    stop_after_first_pass(o, std::make_shared<std::atomic<bool>>(false));
+    const RenderJobResult stopped = run_render_job(o);
+    EXPECT_EQ(stopped.render.end, RenderEnd::kStopped);
+    EXPECT_FALSE(stopped.checkpoint);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
 }
 
 // The overrides apply before the memory check, which happens once, at the resolution rendered: a

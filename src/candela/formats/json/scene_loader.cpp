@@ -353,28 +353,6 @@ void read_film(JsonCursor c, FilmSettings& film, const CameraSettings& camera, s
     c.reject_unknown_keys();
 }
 
-std::string read_text_file(const std::filesystem::path& file) {
-    std::error_code ec;
-    const std::filesystem::file_status status = std::filesystem::status(file, ec);
-    if (status.type() == std::filesystem::file_type::not_found)
-        throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "scene file not found");
-    if (ec)  // a symbolic link loop, a folder we may not search
-        throw SceneError(SourceLocation{file.string(), 0, 0, ""},
-                         fmt::format("cannot access scene file: {}", ec.message()));
-    // Other kinds than folders are allowed: a pipe, as in `candela render <(make_scene)`.
-    if (status.type() == std::filesystem::file_type::directory)
-        throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "is a folder, not a scene file");
-    std::ifstream in(file, std::ios::binary);
-    if (!in)
-        throw SceneError(SourceLocation{file.string(), 0, 0, ""},
-                         fmt::format("cannot open scene file: {}", std::strerror(errno)));
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad())
-        throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "cannot read scene file");
-    return std::move(text).str();
-}
-
 // pbrt-v4 warns the same way: a black image after hours of rendering is a poor way to find out.
 void warn_if_unlit(Scene& scene) {
     const IntegratorType t = scene.integrator.type;
@@ -432,6 +410,27 @@ std::filesystem::path referenced_file(const JsonCursor& file, const std::filesys
 
 void add_warning(Scene& scene, const JsonCursor& at, const std::string& message) {
     scene.warnings.push_back(SceneError(at.document().locate(at.pointer()), message).formatted());
+}
+
+std::string read_text_file(const std::filesystem::path& file) {
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(file, ec);
+    if (status.type() == std::filesystem::file_type::not_found)
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "scene file not found");
+    if (ec)  // a symbolic link loop, a folder we may not search
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""},
+                         fmt::format("cannot access scene file: {}", ec.message()));
+    // Other kinds than folders are allowed: a pipe, as in `candela render <(make_scene)`.
+    if (status.type() == std::filesystem::file_type::directory)
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "is a folder, not a scene file");
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+        throw SceneError(SourceLocation{file.string(), 0, 0, ""},
+                         fmt::format("cannot open scene file: {}", std::strerror(errno)));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw SceneError(SourceLocation{file.string(), 0, 0, ""}, "cannot read scene file");
+    return std::move(text).str();
 }
 
 Scene load_scene(const std::filesystem::path& file, const LoadOptions& options) {

@@ -34,6 +34,10 @@ struct LoadOptions {
     bool charge_film = true;
 };
 
+// A scene file's text, as load_scene reads it (the Python module keeps it, so that a scene loaded
+// from a file reports errors at its lines). Throws SceneError naming a missing or unreadable file.
+std::string read_text_file(const std::filesystem::path& file);
+
 // Reads and loads `file`; the location of errors names it as given. Throws SceneError for a
 // missing or unreadable file as well, and for a scene that needs more memory than the limit.
 // Problems with a documented fallback (degenerate triangles skipped, a light that emits nothing,

@@ -74,7 +74,7 @@ void check_options(const RenderJobOptions& o) {
 // "filename"), else <scene name>.png in the current folder, where the scene name is the file's
 // stem, or its folder's name for the conventional scenes/<name>/scene.json. None for a shard.
 std::vector<fs::path> image_outputs(const RenderJobOptions& o, const Scene& scene) {
-    if (o.shard) return {};
+    if (o.shard || !o.write_files) return {};
     if (!o.outputs.empty()) return o.outputs;
     fs::path named = scene.output_file;
     if (named.empty()) {
@@ -155,13 +155,15 @@ RenderJobResult run_on_this_rank(const RenderJobOptions& o, [[maybe_unused]] con
     // The film is charged once its resolution is final (apply_and_check), when an override or a
     // checkpoint may change it; the loader still guards what it allocates itself.
     const bool resolution_final = !o.overrides.resolution && !o.resume;
-    Scene scene = load_scene_file(o.scene, LoadOptions{.memory_limit = limit, .meshes = nullptr, .source_map = {},
-                                                       .charge_film = resolution_final});
+    const LoadOptions load_options{
+        .memory_limit = limit, .meshes = nullptr, .source_map = {}, .charge_film = resolution_final};
+    Scene scene = o.load ? o.load(load_options) : load_scene_file(o.scene, load_options);
     out.load_seconds = seconds_since(o.started) - load_start;
     const std::vector<fs::path> outputs = image_outputs(o, scene);
-    out.checkpoint_file = o.shard        ? o.outputs.front()
-                          : o.checkpoint ? *o.checkpoint
-                                         : fs::path(outputs.front().string() + ".ckpt");
+    out.checkpoint_file = o.shard           ? o.outputs.front()
+                          : o.checkpoint    ? *o.checkpoint
+                          : outputs.empty() ? fs::path()  // write_files false: no checkpoint
+                                            : fs::path(outputs.front().string() + ".ckpt");
 
     RenderOverrides overrides = o.overrides;
     std::optional<ResumedFile> resumed;
@@ -197,7 +199,7 @@ RenderJobResult run_on_this_rank(const RenderJobOptions& o, [[maybe_unused]] con
     Clock::time_point last_checkpoint = Clock::now();
     if (o.checkpoint_every) options.pass_seconds = std::min(options.pass_seconds, *o.checkpoint_every);
     options.on_pass = [&](const RenderState& state) {
-        if (o.checkpoint_every && seconds_since(last_checkpoint) >= *o.checkpoint_every) {
+        if (o.write_files && o.checkpoint_every && seconds_since(last_checkpoint) >= *o.checkpoint_every) {
             try {
                 save(state);
             } catch (const SceneError& e) {  // the render goes on; the final write reports for good
@@ -241,7 +243,8 @@ RenderJobResult run_on_this_rank(const RenderJobOptions& o, [[maybe_unused]] con
     if (state.samples_done == 0) return out;
     // The checkpoint first: it is what a later run needs. Written whenever the render stopped
     // early, and at the end of a render asked for checkpoints (so that it can be taken further).
-    if (out.render.end != RenderEnd::kComplete || o.checkpoint || o.checkpoint_every || o.resume || o.shard) {
+    if (o.write_files &&
+        (out.render.end != RenderEnd::kComplete || o.checkpoint || o.checkpoint_every || o.resume || o.shard)) {
         save(state);
         out.checkpoint = out.checkpoint_file;
     }

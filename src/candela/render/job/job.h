@@ -1,7 +1,7 @@
 #pragma once
 // The render job: a scene file and typed options in; the images, checkpoints or part file written,
-// and what the caller prints, out. What `candela render` (and later the Python module) does once
-// it has parsed its flags:
+// and what the caller prints, out. What `candela render` and the Python module (python/) do once
+// they have parsed their flags or keywords:
 //
 //   1. checks the options (messages name the command-line flags);
 //   2. reads the checkpoint or part file to resume, and takes the settings it records where the
@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "candela/formats/json/scene_loader.h"
 #include "candela/render/job/render_overrides.h"
 #include "candela/render/render_options.h"
 #include "candela/render/shard.h"
@@ -41,11 +42,18 @@ enum class JobMessage {
 
 struct RenderJobOptions {
     std::filesystem::path scene = {};
+    // Loads the scene in place of reading the file `scene`, with the job's memory limit and film
+    // charge (the Python module: a scene document in memory); `scene` still names it. Empty: the
+    // file, by its extension (formats/scene_file.h).
+    std::function<Scene(const LoadOptions&)> load = {};
     RenderOverrides overrides = {};
     std::optional<MemoryLimit> memory_limit = {};  // default: what this process may have
     // Images, format by extension. None: the scene's own output file (pbrt-v4's Film "filename"),
     // else <scene name>.png in the current folder. With a shard: exactly one, the part file (.ckpt).
     std::vector<std::filesystem::path> outputs = {};
+    // False: the job writes no image and no checkpoint, whatever `outputs` and `checkpoint` say;
+    // the caller takes the image and its layers from the result (the Python module).
+    bool write_files = true;
     int threads = 0;                    // 0: all cores (under MPI: per rank, the host's shared)
     std::optional<int> tile_size = {};  // pixels per tile side, 1..4096; does not change the image
     bool progress = false;              // draw the progress bar on stderr (rank 0 only)
