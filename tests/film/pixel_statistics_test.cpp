@@ -171,17 +171,18 @@ TEST(PixelStatistics, RelativeVarianceAndRelmseFollowTheBenchmarkDefinitionWithA
     EXPECT_DOUBLE_EQ(relative_error_scale(film, 0, 0)[0], 1.0);
     EXPECT_DOUBLE_EQ(relative_variance(film, 0, 0), 1.0 / 1.01);
     EXPECT_DOUBLE_EQ(relative_variance_from_halves(film, 0, 0), 1.0 / 1.01);
-    // A third sample, 2: the halves are still those of the first two (the last power of two), the
-    // estimate scaled to three samples: 1 * 2 / 3.
+    // A third sample, 2: the halves are still those of the first two (the last power of two, mean
+    // M = 2, var(M) = 1); the tail T = 2 adds (T - M)^2 - var(M) = -1 for its own variance:
+    // (2/3)^2 * 1 + (1/3)^2 * (-1) = 1/3, here the squares' estimate too.
     add_to_sum(film.sum(0, 0), Rgb(2.0f, 2.0f, 2.0f));
     add_square_to_sum(film.squares(0, 0), Rgb(2.0f, 2.0f, 2.0f));
     film.count(0, 0) += 1.0;
     film.prefix_sums(0, 0).after_sample(2, film.sum(0, 0), film.count(0, 0));
-    EXPECT_DOUBLE_EQ(variance_of_mean_from_halves(film, 0, 0)[0], 2.0 / 3.0);
+    EXPECT_DOUBLE_EQ(variance_of_mean_from_halves(film, 0, 0)[0], 1.0 / 3.0);
     EXPECT_DOUBLE_EQ(variance_of_mean(film, 0, 0)[0], 1.0 / 3.0);  // sample variance 1, over 3
     EXPECT_TRUE(std::isinf(relative_variance(film, 1, 0)));        // no samples yet
     EXPECT_TRUE(std::isinf(estimated_relmse(film)));
-    EXPECT_DOUBLE_EQ(estimated_relmse(film, {PixelBounds{0, 0, 1, 1}}), 2.0 / 3.0 / 1.01);  // from the halves
+    EXPECT_DOUBLE_EQ(estimated_relmse(film, {PixelBounds{0, 0, 1, 1}}), 1.0 / 3.0 / 1.01);  // from the halves
     const SppSummary spp = spp_summary(film);
     EXPECT_EQ(spp.min, 0.0);
     EXPECT_EQ(spp.max, 3.0);
@@ -293,6 +294,41 @@ TEST(PixelStatistics, TheNeighbourhoodMedianIsTheMiddleValueInAnyOrder) {
         ++checked;
     }
     EXPECT_EQ(checked, 364);
+}
+
+// A rare bright sample after the last power of two (sample 17 of 17): the halves of samples [0, 16)
+// cannot see it, the tail's term does: (1/17)^2 (T - M)^2 with T = 100, M = 1.
+TEST(PixelStatistics, ASampleAfterThePowerOfTwoIsSeenAtOnce) {
+    Film film(1, 1, false, {}, true);
+    std::vector<float> samples(16, 1.0f);
+    samples.push_back(100.0f);
+    add_samples(film, 0, 0, samples);
+    EXPECT_DOUBLE_EQ(variance_of_mean_from_halves(film, 0, 0)[0], 99.0 * 99.0 / (17.0 * 17.0));
+}
+
+// Between powers of two the estimate stays unbiased for independent samples: 24 samples of
+// f(u) = u^2 per pixel (16 in the halves, 8 in the tail), the average over 4096 pixels against
+// sigma^2 / 24, within 4 standard deviations of that average (measured from the pixels' spread).
+TEST(PixelStatistics, IndependentSamplesBetweenPowersOfTwoGiveAnUnbiasedEstimate) {
+    constexpr uint32_t kCount = 24;
+    Film film(kSide, kSide, false, {}, true);
+    std::vector<double> estimates;
+    for (int y = 0; y < kSide; ++y)
+        for (int x = 0; x < kSide; ++x) {
+            const uint64_t pixel = uint64_t(y) * kSide + uint64_t(x);
+            std::vector<float> samples;
+            for (uint32_t s = 0; s < kCount; ++s) {
+                const float u = Sampler(SamplerType::kIndependent, pixel, s, 13).next_float();
+                samples.push_back(u * u);
+            }
+            add_samples(film, x, y, samples);
+            estimates.push_back(variance_of_mean_from_halves(film, x, y)[1]);
+        }
+    const double mean = average(estimates);
+    double spread = 0.0;
+    for (const double e : estimates) spread += (e - mean) * (e - mean);
+    const double sd = std::sqrt(spread / double(estimates.size() - 1) / double(estimates.size()));
+    EXPECT_NEAR(mean, kVariance / kCount, 4.0 * sd);
 }
 
 TEST(PixelStatistics, RegionsCarryTheStatistics) {

@@ -16,7 +16,9 @@
 //
 // From the halves: with 2^m the largest power of two at most the count, the means A and B of
 // samples [0, 2^(m-1)) and [2^(m-1), 2^m) (film.h's PrefixSums), (A - B)^2 / 4 estimates the
-// variance of the 2^m-sample mean, scaled by 2^m / count to the whole count. Each half of a
+// variance of the 2^m-sample mean M; the samples after 2^m, whose mean T the film's sums give,
+// add their own variance, estimated by (T - M)^2 less M's (variance_of_mean_from_halves), so
+// that a rare sample taken between powers of two is seen at once. Each half of a
 // scrambled Sobol net is itself a scrambled net of the pixel, so the two estimate the same integral
 // as the whole does, and their difference carries Sobol's own convergence: with a variance falling
 // as n^-a the estimate is (2^a - 1) times the truth, exact for a = 1 (independent samples, and the
