@@ -3,24 +3,20 @@
 #include <fmt/format.h>
 
 #include <sstream>
+#include <string>
+#include <vector>
 
-#include "candela/core/error.h"
+#include "candela/render/job/render_overrides.h"
 
 namespace candela::cli {
 
 AovLayers parse_aov_flag(const std::string& list) {
-    auto bad = [](const std::string& message) { throw SceneError({}, "--aov: " + message); };
-    AovLayers layers;
-    if (list.empty() || list == "none") return layers;
+    if (list.empty() || list == "none") return {};
     std::istringstream in(list);
-    std::string name;
-    while (std::getline(in, name, ',')) {
-        const std::optional<AovLayer> layer = parse_aov_layer(name);
-        if (!layer) bad(fmt::format("unknown AOV layer \"{}\"; expected one of: {}", name, kAovLayerNames));
-        if (layers.has(*layer)) bad(fmt::format("AOV layer \"{}\" is listed twice", name));
-        layers.add(*layer);
-    }
-    if (list.back() == ',') bad(fmt::format("empty AOV layer name in \"{}\"", list));
+    std::vector<std::string> names;
+    for (std::string name; std::getline(in, name, ',');) names.push_back(name);
+    const AovLayers layers = aov_layers_override("--aov", names);
+    if (list.back() == ',') bad_flag(fmt::format("--aov: empty AOV layer name in \"{}\"", list));
     return layers;
 }
 

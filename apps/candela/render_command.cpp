@@ -40,12 +40,8 @@ RenderOverrides overrides_of(const RenderArgs& a) {
             bad_flag(fmt::format("--resolution: expected WIDTHxHEIGHT (e.g. 640x480), got \"{}\"", *a.resolution));
         o.resolution = Resolution{std::stoi(m[1]), std::stoi(m[2])};
     }
-    if (a.integrator && !(o.integrator = parse_integrator_type(*a.integrator)))
-        bad_flag(fmt::format("--integrator: unknown integrator \"{}\"; expected one of: {}", *a.integrator,
-                             names_list(integrator_type_names())));
-    if (a.sampler && !(o.sampler = parse_sampler_type(*a.sampler)))
-        bad_flag(fmt::format("--sampler: unknown sampler \"{}\"; expected one of: {}", *a.sampler,
-                             names_list(sampler_type_names())));
+    if (a.integrator) o.integrator = integrator_override("--integrator", *a.integrator);
+    if (a.sampler) o.sampler = sampler_override("--sampler", *a.sampler);
     if (a.spectral && a.rgb) bad_flag("--spectral and --rgb: choose one transport mode");
     if (a.spectral || a.rgb) o.spectral = a.spectral;
     if (a.aov) o.aovs = parse_aov_flag(*a.aov);

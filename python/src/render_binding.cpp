@@ -103,23 +103,9 @@ struct Keywords {
 RenderOverrides overrides_of(const Keywords& k) {
     RenderOverrides o{.spp = k.spp, .seed = k.seed, .spectral = k.spectral, .target_error = k.target_error};
     if (k.resolution) o.resolution = Resolution{k.resolution->first, k.resolution->second};
-    if (k.integrator && !(o.integrator = parse_integrator_type(*k.integrator)))
-        bad_flag(fmt::format("integrator: unknown integrator \"{}\"; expected one of: {}", *k.integrator,
-                             names_list(integrator_type_names())));
-    if (k.sampler && !(o.sampler = parse_sampler_type(*k.sampler)))
-        bad_flag(fmt::format("sampler: unknown sampler \"{}\"; expected one of: {}", *k.sampler,
-                             names_list(sampler_type_names())));
-    if (k.aovs) {
-        AovLayers layers;
-        for (const std::string& name : *k.aovs) {
-            const std::optional<AovLayer> layer = parse_aov_layer(name);
-            if (!layer)
-                bad_flag(fmt::format("aovs: unknown AOV layer \"{}\"; expected one of: {}", name, kAovLayerNames));
-            if (layers.has(*layer)) bad_flag(fmt::format("aovs: AOV layer \"{}\" is listed twice", name));
-            layers.add(*layer);
-        }
-        o.aovs = layers;
-    }
+    if (k.integrator) o.integrator = integrator_override("integrator", *k.integrator);
+    if (k.sampler) o.sampler = sampler_override("sampler", *k.sampler);
+    if (k.aovs) o.aovs = aov_layers_override("aovs", *k.aovs);
     return o;
 }
 

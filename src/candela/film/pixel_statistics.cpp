@@ -12,17 +12,22 @@ namespace candela {
 
 namespace {
 
+// Calls f(region) for each of `regions`, or for the whole film when there are none.
+template <class F>
+void for_each_region(const Film& film, const std::vector<PixelBounds>& regions, F&& f) {
+    if (regions.empty())
+        f(PixelBounds{0, 0, film.width(), film.height()});
+    else
+        for (const PixelBounds& r : regions) f(r);
+}
+
 // Calls f(x, y) for every pixel of `regions`, or of the whole film when there are none.
 template <class F>
 void for_each_pixel(const Film& film, const std::vector<PixelBounds>& regions, F&& f) {
-    auto visit_region = [&](const PixelBounds& r) {
+    for_each_region(film, regions, [&](const PixelBounds& r) {
         for (int y = r.y0; y < r.y1; ++y)
             for (int x = r.x0; x < r.x1; ++x) f(x, y);
-    };
-    if (regions.empty())
-        visit_region(PixelBounds{0, 0, film.width(), film.height()});
-    else
-        for (const PixelBounds& r : regions) visit_region(r);
+    });
 }
 
 // The factor from the mean of the summed values to the pixel's image value: 1, or the count over
@@ -76,14 +81,8 @@ PixelSum pixel_mean(const Film& film, int x, int y) {
     return {sum[0] * to_value, sum[1] * to_value, sum[2] * to_value};
 }
 
-}  // namespace
-
-PixelSum variance_of_mean_from_halves(const Film& film, int x, int y) {
-    CANDELA_CHECK(film.has_statistics());
-    const double n = film.count(x, y);
-    if (n < 2.0) return {0.0, 0.0, 0.0};
-    PixelSum a{}, b{};
-    if (!half_means(film, x, y, a, b)) return {0.0, 0.0, 0.0};
+// variance_of_mean_from_halves of a pixel with at least two samples, from its halves' means.
+PixelSum halves_variance(const Film& film, int x, int y, const PixelSum& a, const PixelSum& b) {
     // The mean is M over the last power of two's weight w (its halves A and B) and T over the
     // samples after it (weight u < w); the pixel's mean is (w M + u T) / (w + u), its variance
     // (w / (w + u))^2 var(M) + (u / (w + u))^2 var(T), with var(M) estimated by (A - B)^2 / 4 and
@@ -93,7 +92,8 @@ PixelSum variance_of_mean_from_halves(const Film& film, int x, int y) {
     // stopped in between kept it unseen: veach-bidir at --target-error 0.1 (independent samples)
     // ended 3.3x above the target, and 0.88x with it (bench/RESULTS.md, issue 28).
     const PrefixSums& p = film.prefix_sums(x, y);
-    const double w = double(p.weight[1]), total = film.weighted() ? film.weight(x, y) : n, u = total - w;
+    const double w = double(p.weight[1]), total = film.weighted() ? film.weight(x, y) : film.count(x, y);
+    const double u = total - w;
     PixelSum v{};
     for (size_t c = 0; c < 3; ++c) {
         const double of_m = (a[c] - b[c]) * (a[c] - b[c]) / 4.0;
@@ -105,6 +105,15 @@ PixelSum variance_of_mean_from_halves(const Film& film, int x, int y) {
         v[c] = (w / total) * (w / total) * of_m + (u / total) * (u / total) * of_t;
     }
     return v;
+}
+
+}  // namespace
+
+PixelSum variance_of_mean_from_halves(const Film& film, int x, int y) {
+    CANDELA_CHECK(film.has_statistics());
+    PixelSum a{}, b{};
+    if (film.count(x, y) < 2.0 || !half_means(film, x, y, a, b)) return {0.0, 0.0, 0.0};
+    return halves_variance(film, x, y, a, b);
 }
 
 PixelBounds error_block(const Film& film, int x, int y) {
@@ -166,8 +175,8 @@ double median(double* values, int count) {
 }
 
 // relative_error_scale, with the pixels' means read from `means` (a BlockMeans covering the pixel's
-// error block).
-PixelSum scale_from(const Film& film, int x, int y, const BlockMeans& means) {
+// error block) and the halves' means `a` and `b` (null when the pixel has none).
+PixelSum scale_from(const Film& film, int x, int y, const BlockMeans& means, const PixelSum* a, const PixelSum* b) {
     const PixelBounds block = error_block(film, x, y);
     std::array<std::array<double, 9>, 3> around;
     int count = 0;
@@ -177,14 +186,12 @@ PixelSum scale_from(const Film& film, int x, int y, const BlockMeans& means) {
             for (size_t c = 0; c < 3; ++c) around[c][size_t(count)] = mean[c];
             ++count;
         }
-    PixelSum a{}, b{};
-    const bool halves = film.count(x, y) >= 2.0 && half_means(film, x, y, a, b);
     PixelSum scale{};
     for (size_t c = 0; c < 3; ++c) {
         // Magnitudes: in spectral mode a channel's value can be negative (a wavelength outside the
         // colour space's gamut), and the relative error's denominator is its square.
         scale[c] = std::abs(median(around[c].data(), count));
-        if (halves) scale[c] = std::max(scale[c], std::min(std::abs(a[c]), std::abs(b[c])));
+        if (a) scale[c] = std::max(scale[c], std::min(std::abs((*a)[c]), std::abs((*b)[c])));
     }
     return scale;
 }
@@ -199,25 +206,30 @@ double relative(const PixelSum& v, const PixelSum& scale) {
 // Pixel (x, y)'s relative variance from the squares or the halves, its neighbours' means from `means`.
 double relative_variance_from(const Film& film, int x, int y, VarianceEstimate estimate, const BlockMeans& means) {
     if (film.count(x, y) < 2.0) return std::numeric_limits<double>::infinity();
+    PixelSum a{}, b{};
+    const bool halves = half_means(film, x, y, a, b);
     const PixelSum v = estimate == VarianceEstimate::kSquares ? variance_of_mean(film, x, y)
-                                                              : variance_of_mean_from_halves(film, x, y);
-    return relative(v, scale_from(film, x, y, means));
+                       : halves                               ? halves_variance(film, x, y, a, b)
+                                                              : PixelSum{0.0, 0.0, 0.0};
+    return relative(v,
+                    halves ? scale_from(film, x, y, means, &a, &b) : scale_from(film, x, y, means, nullptr, nullptr));
 }
 
 }  // namespace
 
 PixelSum relative_error_scale(const Film& film, int x, int y) {
     CANDELA_CHECK(film.has_statistics());
-    return scale_from(film, x, y, BlockMeans(film, PixelBounds{x, y, x + 1, y + 1}));
+    PixelSum a{}, b{};
+    const bool halves = film.count(x, y) >= 2.0 && half_means(film, x, y, a, b);
+    return scale_from(film, x, y, BlockMeans(film, PixelBounds{x, y, x + 1, y + 1}), halves ? &a : nullptr,
+                      halves ? &b : nullptr);
 }
 
 double relative_variance(const Film& film, int x, int y) {
-    if (film.count(x, y) < 2.0) return std::numeric_limits<double>::infinity();
     return relative_variance_from(film, x, y, VarianceEstimate::kSquares, BlockMeans(film, {x, y, x + 1, y + 1}));
 }
 
 double relative_variance_from_halves(const Film& film, int x, int y) {
-    if (film.count(x, y) < 2.0) return std::numeric_limits<double>::infinity();
     return relative_variance_from(film, x, y, VarianceEstimate::kHalves, BlockMeans(film, {x, y, x + 1, y + 1}));
 }
 
@@ -234,7 +246,7 @@ double estimated_relmse(const Film& film, const std::vector<PixelBounds>& region
     double total = 0.0;
     uint64_t pixels = 0;
     std::vector<double> band;
-    auto add_region = [&](const PixelBounds& r) {
+    for_each_region(film, regions, [&](const PixelBounds& r) {
         // A band of block rows at a time: its means are computed once and stay in cache.
         for (int y0 = r.y0; y0 < r.y1; y0 = (y0 / kErrorBlockSize + 1) * kErrorBlockSize) {
             const int y1 = std::min(r.y1, (y0 / kErrorBlockSize + 1) * kErrorBlockSize);
@@ -242,11 +254,7 @@ double estimated_relmse(const Film& film, const std::vector<PixelBounds>& region
             for (const double relative : band) total += relative;  // row-major, as the pixels
             pixels += band.size();
         }
-    };
-    if (regions.empty())
-        add_region(PixelBounds{0, 0, film.width(), film.height()});
-    else
-        for (const PixelBounds& r : regions) add_region(r);
+    });
     return pixels > 0 ? total / double(pixels) : 0.0;
 }
 

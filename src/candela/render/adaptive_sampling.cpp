@@ -14,8 +14,8 @@ std::vector<PixelBounds> tile_blocks(const Tile& tile) {
     constexpr int b = kAdaptiveBlockSize;
     for (int y = tile.y0 / b * b; y < tile.y1; y += b)
         for (int x = tile.x0 / b * b; x < tile.x1; x += b)
-            blocks.push_back(
-                {std::max(x, tile.x0), std::max(y, tile.y0), std::min(x + b, tile.x1), std::min(y + b, tile.y1)});
+            blocks.push_back({std::max(x, tile.x0), std::max(y, tile.y0), std::min(x + b, tile.x1),
+                              std::min(y + b, tile.y1)});
     return blocks;
 }
 

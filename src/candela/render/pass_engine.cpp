@@ -39,9 +39,8 @@ void check_start_state(const FrameRenderer& frame, const RenderState& start, boo
     if (!(start.film.aovs() == frame.aovs()))
         throw RenderError("render: the start state's AOV layers are not the ones the scene asks for");
     if (statistics && !start.film.has_statistics())
-        throw RenderError(
-            "render: the start state lacks the per-pixel statistics (sums of squares, sample counts) "
-            "that adaptive sampling and a target error need");
+        throw RenderError("render: the start state lacks the per-pixel statistics (sums of squares, sample counts) "
+                          "that adaptive sampling and a target error need");
 }
 
 }  // namespace
@@ -115,8 +114,8 @@ void PassEngine::update_estimate() {
 }
 
 // After a pass (or at the start), for a film with statistics, at a decision point: the image's
-// estimated relMSE, and whether the render is done because the estimate met the target or every block
-// stopped, else the target's allocation scale for the passes to the next decision point.
+// estimated relMSE, and whether the render is done because the estimate met the target or every
+// block stopped, else the target's allocation scale for the passes to the next decision point.
 bool PassEngine::decide() {
     if (!state_.film.has_statistics() || state_.samples_done == 0) return false;
     // The estimate reads every pixel's neighbourhood (film/pixel_statistics.h), which costs as much
@@ -151,10 +150,9 @@ RenderResult PassEngine::run(PassExecutor& executor) {
                 seconds_left = std::chrono::duration<double>(*options_.deadline - Clock::now()).count();
             uint32_t remaining = spp_ - state_.samples_done;
             if (decisions_)  // decisions are made at fixed counts, so passes end there
-                remaining = std::min(remaining,
-                                     next_decision_point(state_.samples_done, first_decision_) - state_.samples_done);
-            const uint32_t n =
-                next_pass_spp(previous, remaining, options_.pass_seconds, seconds_left, options_.pass_spp);
+                remaining = std::min(remaining, next_decision_point(state_.samples_done, first_decision_) -
+                                                    state_.samples_done);
+            const uint32_t n = next_pass_spp(previous, remaining, options_.pass_seconds, seconds_left, options_.pass_spp);
             if (n == 0) {  // not one more sample per pixel fits before the deadline
                 abandon(RenderEnd::kDeadline);
                 break;
@@ -162,12 +160,8 @@ RenderResult PassEngine::run(PassExecutor& executor) {
             if (next_.width() != frame_.width() || next_.height() != frame_.height())
                 next_ = Film(frame_.width(), frame_.height(), frame_.weighted(), frame_.aovs(),
                              state_.film.has_statistics());
-            const PassWork pass{uint32_t(stats.passes + 1),
-                                state_.samples_done,
-                                state_.samples_done + n,
-                                &state_.film,
-                                &next_,
-                                target_scale_};
+            const PassWork pass{uint32_t(stats.passes + 1), state_.samples_done, state_.samples_done + n, &state_.film,
+                                &next_, target_scale_};
             const Clock::time_point pass_start = Clock::now();
             const uint64_t dropped = executor.run_pass(pass, *this);
             if (end_.load() != RenderEnd::kComplete) break;  // `next_` is a mix of tiles: dropped
@@ -188,8 +182,9 @@ RenderResult PassEngine::run(PassExecutor& executor) {
     result.end = end_.load();
     stats.render_seconds = seconds_since(render_start);
     stats.dropped_samples = state_.dropped_samples - start_dropped;
-    stats.samples = state_.film.has_statistics() ? uint64_t(spp_summary(state_.film, regions_).total - samples_before)
-                                                 : pixels_ * (state_.samples_done - start_samples);
+    stats.samples = state_.film.has_statistics()
+                        ? uint64_t(spp_summary(state_.film, regions_).total - samples_before)
+                        : pixels_ * (state_.samples_done - start_samples);
     stats.relmse_estimate = relmse_estimate_;
     stats.converged = converged_;
     result.image = state_.film.resolve(state_.samples_done);

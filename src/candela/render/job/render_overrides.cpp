@@ -100,6 +100,34 @@ std::optional<Resolution> resolution_of_film(const Scene& scene, int width, int 
 
 void bad_flag(const std::string& message) { throw SceneError({}, message); }
 
+IntegratorType integrator_override(std::string_view flag, const std::string& name) {
+    const std::optional<IntegratorType> type = parse_integrator_type(name);
+    if (!type)
+        bad_flag(fmt::format("{}: unknown integrator \"{}\"; expected one of: {}", flag, name,
+                             names_list(integrator_type_names())));
+    return *type;
+}
+
+SamplerType sampler_override(std::string_view flag, const std::string& name) {
+    const std::optional<SamplerType> type = parse_sampler_type(name);
+    if (!type)
+        bad_flag(fmt::format("{}: unknown sampler \"{}\"; expected one of: {}", flag, name,
+                             names_list(sampler_type_names())));
+    return *type;
+}
+
+AovLayers aov_layers_override(std::string_view flag, const std::vector<std::string>& names) {
+    AovLayers layers;
+    for (const std::string& name : names) {
+        const std::optional<AovLayer> layer = parse_aov_layer(name);
+        if (!layer)
+            bad_flag(fmt::format("{}: unknown AOV layer \"{}\"; expected one of: {}", flag, name, kAovLayerNames));
+        if (layers.has(*layer)) bad_flag(fmt::format("{}: AOV layer \"{}\" is listed twice", flag, name));
+        layers.add(*layer);
+    }
+    return layers;
+}
+
 void apply_overrides(const RenderOverrides& o, Scene& scene) {
     if (o.spp) {
         if (*o.spp < 1) bad_flag(fmt::format("--spp: expected an integer >= 1, got {}", *o.spp));

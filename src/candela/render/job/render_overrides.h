@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "candela/film/aov_layers.h"
 #include "candela/scene/render_settings.h"
@@ -48,6 +50,13 @@ void apply_overrides(const RenderOverrides& overrides, Scene& scene);
 // A flag's value the caller got wrong: thrown as a SceneError without a file, so that the command
 // line (and Python) report it as they report the scene file's errors.
 [[noreturn]] void bad_flag(const std::string& message);
+
+// The integrator, the sampler and the AOV layers that a flag or keyword `flag` names (`--sampler`
+// on the command line, `sampler` in Python): bad_flag naming `flag` for an unknown name (listing
+// the known ones) or, for the layers, a repeated one.
+IntegratorType integrator_override(std::string_view flag, const std::string& name);
+SamplerType sampler_override(std::string_view flag, const std::string& name);
+AovLayers aov_layers_override(std::string_view flag, const std::vector<std::string>& names);
 
 // Resuming: the settings a checkpoint's identity records (resolution, seed, sampler, integrator,
 // AOV layers, adaptive sampling) and, for a shard's part file, its target spp (`target_spp` > 0),
