@@ -7,7 +7,11 @@
 # times to any equal error). The reference's own noise adds the same floor to both.
 #
 #   bench/media_vs_pbrt.sh --pbrt PATH/pbrt [--spp N] [--ref-spp N | --ref-dir DIR] [--threads N]
-#                          [--record] [--no-build] [--build-dir DIR] [--work DIR] SCENE.pbrt...
+#                          [--cpu] [--record] [--no-build] [--build-dir DIR] [--work DIR] SCENE.pbrt...
+#
+# Any pbrt-v4 scene works (media, hair, ...). --cpu measures each render's CPU seconds (user + system)
+# instead of its wall time: on a machine shared with other work the wall time measures the other
+# work too, while both renderers keep every thread busy, so their CPU seconds compare the work.
 #
 # --ref-dir DIR takes DIR/NAME.exr as the reference instead of rendering one (the pbrt-v4
 # references of tests/data/pbrt-media/refs/, 1024 spp at seed 0).
@@ -18,7 +22,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 source bench/lib.sh
 
-pbrt="" spp=64 ref_spp=1024 ref_dir="" threads=2 record=0 build=1 build_dir=build work_dir=""
+pbrt="" spp=64 ref_spp=1024 ref_dir="" threads=2 cpu=0 record=0 build=1 build_dir=build work_dir=""
 scenes=()
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -27,6 +31,7 @@ while [ $# -gt 0 ]; do
     --ref-spp) ref_spp="$2"; shift 2 ;;
     --ref-dir) ref_dir="$2"; shift 2 ;;
     --threads) threads="$2"; shift 2 ;;
+    --cpu) cpu=1; shift ;;
     --record) record=1; shift ;;
     --no-build) build=0; shift ;;
     --build-dir) build_dir="$2"; shift 2 ;;
@@ -43,17 +48,25 @@ if [ "$build" = 1 ]; then BUILD_DIR="$build_dir" scripts/build.sh candela_cli ca
 candela="$build_dir/candela"
 relmse="$build_dir/candela_relmse"
 
-# Seconds a command takes, wall clock; its output goes to the log $1.
+# Seconds a command takes, wall clock (or CPU seconds with --cpu); its output goes to the log $1.
 timed() {
   local log="$1"; shift
   local t0 t1
+  if [ "$cpu" = 1 ]; then
+    /usr/bin/time -f "%U %S" -o "$log.time" "$@" >"$log" 2>&1
+    awk '{print $1 + $2}' "$log.time"
+    return
+  fi
   t0=$(now)
   "$@" >"$log" 2>&1
   t1=$(now)
   calc "$t1 - $t0"
 }
 
-table="| scene | spp | pbrt-v4 s | pbrt-v4 relMSE | candela s | candela relMSE | candela's time to pbrt-v4's error |
+unit=s
+cpu_flag=""
+[ "$cpu" = 1 ] && unit="CPU s" && cpu_flag=" --cpu"
+table="| scene | spp | pbrt-v4 $unit | pbrt-v4 relMSE | candela $unit | candela relMSE | candela's time to pbrt-v4's error |
 | --- | --- | --- | --- | --- | --- | --- |"
 for scene in "${scenes[@]}"; do
   name=$(basename "$scene" .pbrt)
@@ -78,12 +91,12 @@ echo "$table"
 if [ "$record" = 1 ]; then
   {
     echo
-    echo "### Media against pbrt-v4, commit $(commit_id), $(date -u +%Y-%m-%d), $(cpu_model), $threads threads"
+    echo "### Against pbrt-v4, commit $(commit_id), $(date -u +%Y-%m-%d), $(cpu_model), $threads threads"
     echo
     if [ -n "$ref_dir" ]; then
-      echo "bench/media_vs_pbrt.sh --spp $spp --ref-dir $ref_dir (references: pbrt-v4's, 1024 spp, seed 0)"
+      echo "bench/media_vs_pbrt.sh --spp $spp$cpu_flag --ref-dir $ref_dir (references: pbrt-v4's, 1024 spp, seed 0)"
     else
-      echo "bench/media_vs_pbrt.sh --spp $spp --ref-spp $ref_spp (reference: pbrt-v4, seed 100)"
+      echo "bench/media_vs_pbrt.sh --spp $spp$cpu_flag --ref-spp $ref_spp (reference: pbrt-v4, seed 100)"
     fi
     echo
     echo "$table"
