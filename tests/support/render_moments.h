@@ -79,9 +79,10 @@ inline RenderMoments render_moments(const Scene& scene, bool for_variance = true
         ADD_FAILURE() << "render_moments: per-pixel variances need sampler type independent; use "
                          "render_moments_replicated for sobol";
     Accelerator accel(scene.meshes, scene.spheres, scene.disks, scene.shapes, alpha_cutouts(scene),
-                      Instancing{scene.objects, scene.instances}, scene.curves, scene.quadrics);
+                      Instancing{scene.objects, scene.instances, scene.instance_motions, scene.camera.shutter},
+                      scene.curves, scene.quadrics);
     LightSet lights = build_light_set(scene, accel);  // as render() builds them
-    const Camera camera = make_camera(scene.camera);
+    const Camera camera = make_camera(scene.camera, !scene.instance_motions.empty());
     std::unique_ptr<Integrator> integrator = make_integrator(scene, accel, lights);
     const PixelFilter filter(scene.film.filter);
     if (filter.weighted() || scene.film.crop_window != FilmSettings{}.crop_window)

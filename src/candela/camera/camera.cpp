@@ -8,8 +8,8 @@ StaticCamera make_static_camera(const CameraSettings& settings) {
     return PerspectiveCamera(settings);
 }
 
-Camera make_camera(const CameraSettings& settings) {
-    if (settings.motion) return MovingCamera(settings);
+Camera make_camera(const CameraSettings& settings, bool shapes_move) {
+    if (settings.motion || shapes_move) return MovingCamera(settings);
     return visit([](const auto& camera) -> Camera { return camera; }, make_static_camera(settings));
 }
 

@@ -9,8 +9,8 @@ namespace candela {
 
 using Camera = Variant<PerspectiveCamera, ThinLensCamera, OrthographicCamera, MovingCamera>;
 
-// The camera the settings describe: a MovingCamera when settings.motion is set, else the still
-// camera of make_static_camera.
-Camera make_camera(const CameraSettings& settings);
+// The camera the settings describe: a MovingCamera when settings.motion is set or shapes move
+// (its samples then draw times), else the still camera of make_static_camera.
+Camera make_camera(const CameraSettings& settings, bool shapes_move = false);
 
 }  // namespace candela

@@ -1,7 +1,6 @@
 #include "candela/camera/moving_camera.h"
 
 #include "candela/camera/camera_frame.h"
-#include "candela/core/check.h"
 
 namespace candela {
 
@@ -24,9 +23,9 @@ CameraBasis start_basis(const CameraSettings& s) {
 }  // namespace
 
 MovingCamera::MovingCamera(const CameraSettings& settings)
-    : still_(make_static_camera(settings)), shutter_(settings.shutter), width_(settings.width),
-      height_(settings.height) {
-    CANDELA_CHECK(settings.motion.has_value());
+    : still_(make_static_camera(settings)), moves_(settings.motion.has_value()), shutter_(settings.shutter),
+      width_(settings.width), height_(settings.height) {
+    if (!moves_) return;
     const Transform start = world_from_camera(start_basis(settings));
     camera_from_start_ = start.inverse();
     world_from_camera_ = AnimatedTransform(start, settings.motion->start_time, world_from_camera(settings.motion->end),
@@ -35,6 +34,8 @@ MovingCamera::MovingCamera(const CameraSettings& settings)
 
 Ray MovingCamera::generate_ray(const Vec2f& film, double time, Sampler& sampler) const {
     Ray ray = visit([&](const auto& camera) { return camera.generate_ray(film, sampler); }, still_);
+    ray.time = float((time - shutter_[0]) / (shutter_[1] - shutter_[0]));
+    if (!moves_) return ray;
     // From the start frame to the frame at `time`; double, as the frames are, so that a time at
     // the start gives back the still camera's ray to float precision.
     const Transform moved = world_from_camera_.at(time) * camera_from_start_;

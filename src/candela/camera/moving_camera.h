@@ -1,8 +1,10 @@
 #pragma once
-// A camera that moves during the shutter (motion blur). Each sample draws its time t uniformly in
-// the shutter (pbrt-v4's CameraBase::SampleTime), the still camera makes its ray at the start
-// frame, and the ray is carried to the frame at t: world_from_camera(t) * camera_from_world(start).
-// Only scenes whose camera moves pay for it: the still cameras are separate alternatives.
+// A camera in a scene where something moves during the shutter (motion blur): the camera, or
+// shapes (geometry/instance_motion.h). Each sample draws its time t uniformly in the shutter
+// (pbrt-v4's CameraBase::SampleTime), which the ray carries (Ray::time, as a fraction of the
+// shutter) to the shapes it meets; the still camera makes its ray at the start frame, and if the
+// camera moves the ray is carried to the frame at t: world_from_camera(t) * camera_from_world(start).
+// Only scenes where something moves pay for it: the still cameras are separate alternatives.
 #include "candela/camera/camera_model.h"
 #include "candela/camera/camera_settings.h"
 #include "candela/camera/static_camera.h"
@@ -18,7 +20,7 @@ Transform world_from_camera(const CameraBasis& basis);
 
 class MovingCamera {
   public:
-    // settings.motion must be set.
+    // The camera of `settings`, moving if settings.motion is set (else only its rays' times vary).
     explicit MovingCamera(const CameraSettings& settings);
 
     // The time of shutter sample u in [0, 1).
@@ -38,6 +40,7 @@ class MovingCamera {
     StaticCamera still_;       // at the start frame
     Transform camera_from_start_;  // world to camera space, at the start frame
     AnimatedTransform world_from_camera_;
+    bool moves_ = false;  // settings.motion: the frame changes over the shutter
     std::array<double, 2> shutter_;
     int width_, height_;
 };

@@ -11,6 +11,7 @@
 // A mirroring transform needs no winding swap: the front normal carried by the inverse transpose
 // stays on the side it was on, which is what transform_mesh's swap achieves for a mesh placed
 // directly (pbrt-v4's Transform of a SurfaceInteraction does the same).
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -48,23 +49,32 @@ struct AffineMap {
     }
 };
 
-// One placement of an object: 100 bytes, a matrix and its inverse in float. (A Transform, in
+// Instance::motion of an instance that stands still.
+inline constexpr uint32_t kNoMotion = 0xffffffffu;
+
+// One placement of an object: 104 bytes, a matrix and its inverse in float. (A Transform, in
 // double with its inverse, is 256: 10,000 instances of it would cost more than Embree's own
 // instance records.)
 struct Instance {
     uint32_t object = 0;  // into the scene's objects
-    AffineMap to_world;   // object space to world space
+    AffineMap to_world;   // object space to world space (a moving instance: at the shutter's opening)
     AffineMap to_object;  // its inverse: normals transform by its transpose
+    uint32_t motion = kNoMotion;  // into the scene's instance motions (instance_motion.h), or none
 };
 
 // An instance of `object` placed by `to_world`, which must be affine and invertible, with both
 // matrices within float range (the scene loader checks).
 Instance make_instance(uint32_t object, const Transform& to_world);
 
-// What the accelerator needs to build instances; empty for a scene without them.
+struct InstanceMotion;  // instance_motion.h
+
+// What the accelerator needs to build instances; empty for a scene without them. Moving instances
+// index `motions`, which the shutter [open, close] maps to Embree's ray times [0, 1].
 struct Instancing {
     std::span<const ObjectShapes> objects;
     std::span<const Instance> instances;
+    std::span<const InstanceMotion> motions = {};
+    std::array<double, 2> shutter{0.0, 1.0};
 };
 
 // Moves a hit computed in object space (point, error bound, normals) to world space. The error

@@ -39,7 +39,7 @@ CANDELA_HD inline Vec3f offset_ray_origin(const Vec3f& p, const Vec3f& p_error, 
 // A ray leaving the hit in direction w (either side of the surface).
 CANDELA_HD inline Ray spawn_ray(const SurfaceHit& hit, const Vec3f& w) {
     Vec3f n = dot(w, hit.ng) >= 0.0f ? hit.ng : -hit.ng;
-    return Ray{offset_ray_origin(hit.p, hit.p_error, n), w, 0.0f, kInfinity};
+    return Ray{offset_ray_origin(hit.p, hit.p_error, n), w, 0.0f, kInfinity, hit.time};
 }
 
 // Fraction of a shadow ray's length left out at its far end, so that it does not hit the surface
@@ -50,7 +50,7 @@ inline constexpr float kShadowEpsilon = 1e-4f;
 CANDELA_HD inline Ray spawn_ray_to(const SurfaceHit& hit, const Vec3f& target) {
     Vec3f n = dot(target - hit.p, hit.ng) >= 0.0f ? hit.ng : -hit.ng;
     Vec3f o = offset_ray_origin(hit.p, hit.p_error, n);
-    return Ray{o, target - o, 0.0f, 1.0f - kShadowEpsilon};
+    return Ray{o, target - o, 0.0f, 1.0f - kShadowEpsilon, hit.time};
 }
 
 }  // namespace candela

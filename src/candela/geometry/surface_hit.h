@@ -21,6 +21,8 @@ struct SurfaceHit {
     uint32_t prim_id = 0;  // triangle index within the mesh; 0 for spheres and disks
     uint32_t instance = 0; // for a shape of an object (geometry/instance.h), which the ray met
                            // through an instance: that instance's index; 0 for other shapes
+    float time = 0;        // the ray's time: rays spawned here keep it, a moving instance is
+                           // placed at it (geometry/instance_motion.h)
 
     // True when the ray came from the front side.
     bool front_face(const Vec3f& ray_dir) const { return dot(ray_dir, ng) < 0.0f; }

@@ -250,8 +250,8 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
                                 auto phase = [&](const Vec3f& wi) { return Color(henyey_greenstein(dot(wo, normalize(wi)), g)); };
                                 auto phase_pdf = [&](const Vec3f& wi) { return henyey_greenstein(dot(wo, normalize(wi)), g); };
                                 auto spawn = [&](const LightSample& ls) {
-                                    return ls.infinite ? Ray{p, ls.wi, 0.0f, kInfinity}
-                                                       : Ray{p, ls.p - p, 0.0f, 1.0f - kShadowEpsilon};
+                                    return ls.infinite ? Ray{p, ls.wi, 0.0f, kInfinity, ray.time}
+                                                       : Ray{p, ls.p - p, 0.0f, 1.0f - kShadowEpsilon, ray.time};
                                 };
                                 if (next_event_ && !lights_.empty())
                                     L += path.direct_light(p, Vec3f{}, light_numbers, beta, r_u, phase, phase_pdf, spawn,
@@ -266,7 +266,7 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
                                 prev_p = p;
                                 prev_n = Vec3f{};
                                 scattered = true;
-                                ray = Ray{p, ps.wi, 0.0f, kInfinity};
+                                ray = Ray{p, ps.wi, 0.0f, kInfinity, ray.time};
                                 specular_bounce = false;
                                 return false;
                             }

@@ -137,13 +137,22 @@ AnimatedTransform::AnimatedTransform(const Transform& start, double start_time, 
 Transform AnimatedTransform::at(double time) const {
     if (!animated_ || time <= start_time_) return start_;
     if (time >= end_time_) return end_;
-    const double t = (time - start_time_) / (end_time_ - start_time_);
-    const Vec3d translation = translation_[0] * (1.0 - t) + translation_[1] * t;
-    const Quaternion rotation = slerp(t, rotation_[0], rotation_[1]);
-    Matrix scale{};
+    const Components c = components(time);
+    return Transform::translate(c.translation) * rotation_from_quaternion(c.rotation) * Transform(c.scale);
+}
+
+AnimatedTransform::Components AnimatedTransform::components(double time) const {
+    if (!animated_) {
+        const Decomposition d = decompose(start_);
+        return {d.translation, quaternion_from_rotation(d.rotation), d.scale};
+    }
+    const double t = std::clamp((time - start_time_) / (end_time_ - start_time_), 0.0, 1.0);
+    Components c;
+    c.translation = translation_[0] * (1.0 - t) + translation_[1] * t;
+    c.rotation = slerp(t, rotation_[0], rotation_[1]);
     for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) scale[i][j] = (1.0 - t) * scale_[0][i][j] + t * scale_[1][i][j];
-    return Transform::translate(translation) * rotation_from_quaternion(rotation) * Transform(scale);
+        for (int j = 0; j < 4; ++j) c.scale[i][j] = (1.0 - t) * scale_[0][i][j] + t * scale_[1][i][j];
+    return c;
 }
 
 }  // namespace candela

@@ -44,6 +44,13 @@ class AnimatedTransform {
     bool animated() const { return animated_; }
     // The transform at `time`: start() at or before start_time, end() at or after end_time.
     Transform at(double time) const;
+    // The interpolated parts at `time`: at(time) is translate(translation) * rotation * scale.
+    struct Components {
+        Vec3d translation;
+        Quaternion rotation;
+        Transform::Matrix scale;
+    };
+    Components components(double time) const;
 
     const Transform& start() const { return start_; }
     const Transform& end() const { return end_; }

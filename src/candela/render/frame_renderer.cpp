@@ -161,9 +161,10 @@ struct FrameRenderer::Parts {
 
     Parts(const Scene& scene, PixelBounds bounds)
         : accel(scene.meshes, scene.spheres, scene.disks, scene.shapes, alpha_cutouts(scene),
-                Instancing{scene.objects, scene.instances}, scene.curves, scene.quadrics),
+                Instancing{scene.objects, scene.instances, scene.instance_motions, scene.camera.shutter},
+                scene.curves, scene.quadrics),
           lights(build_light_set(scene, accel)),
-          camera(make_camera(scene.camera)),
+          camera(make_camera(scene.camera, !scene.instance_motions.empty())),
           integrator(make_integrator(scene, accel, lights)),
           filter(scene.film.filter),
           aov_tracer(scene.film.aovs.empty() ? std::nullopt : std::make_optional<AovTracer>(scene, accel)),

@@ -40,7 +40,7 @@ constexpr uint64_t kUvBytes = 8;
 // normal hits read, in meshes small enough to keep one (geometry/accelerator.h).
 constexpr uint64_t kTriangleBytes = 12 + 12 + 96 + 8 + 12;
 constexpr uint64_t kNormalTableBytes = 12;
-// Per instance: candela's Instance (a float matrix and its inverse, 100), Embree's instance
+// Per instance: candela's Instance (a float matrix and its inverse, 104), Embree's instance
 // geometry with its matrices, and the instance's share of the top-level BVH: 10,000 instances of
 // one object added about 540 B each to the resident set (tests/geometry/instance_memory_test.cpp).
 constexpr uint64_t kInstanceBytes = 640;

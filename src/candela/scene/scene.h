@@ -14,6 +14,7 @@
 #include "candela/geometry/disk.h"
 #include "candela/geometry/quadric.h"
 #include "candela/geometry/instance.h"
+#include "candela/geometry/instance_motion.h"
 #include "candela/geometry/shape.h"
 #include "candela/geometry/sphere.h"
 #include "candela/geometry/triangle_mesh.h"
@@ -96,6 +97,9 @@ struct Scene {
     std::vector<ObjectShapes> objects;
     std::vector<std::string> object_names;  // parallel to objects
     std::vector<Instance> instances;
+    // The placements over the shutter of the moving instances (Instance::motion indexes them), and
+    // of the moving shapes, each of which the loader makes a one-shape object and its instance.
+    std::vector<InstanceMotion> instance_motions;
     std::optional<EnvironmentSettings> environment;
     std::vector<DeltaLightSettings> delta_lights;
     // Participating media (media/medium.h), named; shapes index them (Shape::interior/exterior).

@@ -211,15 +211,6 @@ CameraBasis read_camera_basis(const JsonCursor& v) {
     return basis;
 }
 
-// An interval [a, b] of times with b > a (the shutter: open, close; the motion's times: start,
-// end), named `first` and `second` in the error.
-std::array<double, 2> read_time_interval(const JsonCursor& v, std::string_view first, std::string_view second) {
-    auto e = v.elements(2, fmt::format("an array of 2 numbers [{}, {}]", first, second));
-    const std::array<double, 2> t{e[0].number(), e[1].number()};
-    if (!(t[1] > t[0])) e[1].fail(fmt::format("{} must be after {} ({}), got {}", second, first, t[0], t[1]));
-    return t;
-}
-
 // The camera's `motion`: its frame at the end of `times` (default [0, 1]), given as the camera's
 // own frame is (position / look_at / up, or transform), so that both have the same handedness.
 CameraMotion read_camera_motion(JsonCursor m, const CameraSettings& start) {

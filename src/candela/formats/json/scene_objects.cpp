@@ -78,23 +78,19 @@ void read_instance(JsonCursor& c, const ShapeSection& section, Scene& scene, Mem
     std::optional<JsonCursor> transform = c.get("transform");
     Transform to_world;
     if (transform) to_world = read_transform(*transform);
+    std::optional<JsonCursor> motion = c.get("motion");
     c.reject_unknown_keys();
-    const Instance instance = make_instance(object, to_world);
-    // Embree places the object by a float matrix, and hits on it are float: the matrix, its
-    // inverse and the object's corners must stay within float range.
-    const std::string& name = scene.object_names[object];
-    for (const AffineMap* map : {&instance.to_world, &instance.to_object})
-        for (const auto& row : map->m)
-            for (float v : row)
-                if (!std::isfinite(v))
-                    transform->fail(fmt::format("the transform of object {} {} beyond float range", json_quoted(name),
-                                                map == &instance.to_world ? "reaches" : "has an inverse"));
+    Instance instance = make_instance(object, to_world);
+    const std::string what = fmt::format("object {}", json_quoted(scene.object_names[object]));
     const ObjectBounds& b = section.objects[object];
-    if (transform && !b.empty()) {
-        for (int corner = 0; corner < 8; ++corner) {
-            const Vec3d p((corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y, (corner & 4) ? b.hi.z : b.lo.z);
-            if (!is_finite(Vec3f(instance.to_world.apply_point(p))))
-                transform->fail(fmt::format("the transform moves object {} beyond float range", json_quoted(name)));
+    if (transform) check_instance_range(instance, to_world, b, *transform, what);
+    if (motion) {
+        const AnimatedTransform path = read_motion(*motion, to_world);
+        if (path.animated()) {
+            check_instance_range(make_instance(object, path.end()), path.end(), b, *motion, what);
+            instance = make_instance(object, path.at(scene.camera.shutter[0]));
+            instance.motion = static_cast<uint32_t>(scene.instance_motions.size());
+            scene.instance_motions.push_back(InstanceMotion{path, Transform()});
         }
     }
     if (auto refused = budget.charge(instance_memory_bytes(), "an instance")) c.fail(*refused);

@@ -13,6 +13,7 @@
 
 #include "candela/core/error.h"
 #include "candela/math/constants.h"
+#include "candela/math/animated_transform.h"
 #include "candela/math/transform.h"
 #include "candela/formats/curves/curve_file.h"
 #include "candela/formats/json/json_cursor.h"
@@ -132,6 +133,20 @@ Quadric read_quadric(JsonCursor& c, std::string_view type, bool reverse_orientat
 // A `curves` shape (scene_curves.cpp): `shape` has its material and media, `c` the rest.
 void read_curves(JsonCursor& c, const ShapeSection& section, Scene& scene, MemoryBudget& budget, Shape shape,
                  bool reverse_orientation);
+
+// An interval [a, b] of times with b > a (the shutter: open, close; the motion's times: start,
+// end), named `first` and `second` in the error (scene_motion.cpp).
+std::array<double, 2> read_time_interval(const JsonCursor& v, std::string_view first, std::string_view second);
+// The `motion` of a shape or instance whose transform is `start` (scene_motion.cpp): its transform
+// at the end of `times` (default [0, 1]), of the same handedness as `start`.
+AnimatedTransform read_motion(JsonCursor motion, const Transform& start);
+// Checks that `instance`, placed by `to_world`, keeps `bounds` (its object's) within float range,
+// and its matrices too; `blame` is the key that placed it, `what` names the object in the error.
+void check_instance_range(const Instance& instance, const Transform& to_world, const ObjectBounds& bounds,
+                          const JsonCursor& blame, std::string_view what);
+// Makes the shape just read (the last of scene.shapes, placed at its start transform `start`) a
+// moving one: a one-shape object and its instance, moved by `motion` (a shape's `motion` key).
+void make_shape_move(const JsonCursor& motion, const Transform& start, Scene& scene);
 
 // `objects`: name -> {"shapes": [...]}, each a run of shapes in object space that instances place
 // (geometry/instance.h); read after the materials and before `shapes`. Returns each object's

@@ -146,6 +146,16 @@ MeshSizeCheck budget_check(const std::filesystem::path& path, const std::string&
     };
 }
 
+void read_still_shape(JsonCursor& c, std::string_view type, const ShapeSection& section, Scene& scene,
+                      MemoryBudget& budget);
+
+// A shape with a `motion` (motion blur): read as any shape, at its start transform, then made a
+// one-shape object and its moving instance (geometry/instance_motion.h). Not an object's shape
+// (its instance moves), nor a light (pbrt-v4 refuses animated area lights: its light sampling
+// would need the emitter's time), nor cut out (alpha tests see the object's space).
+void read_moving_shape(JsonCursor& c, const JsonCursor& motion, std::string_view type, const ShapeSection& section,
+                       Scene& scene, MemoryBudget& budget);
+
 void read_shape(JsonCursor c, const ShapeSection& section, Scene& scene, MemoryBudget& budget) {
     JsonCursor type_key = c.require("type");
     std::string_view type = type_key.choice("shape type", kShapeTypes);
@@ -157,6 +167,15 @@ void read_shape(JsonCursor c, const ShapeSection& section, Scene& scene, MemoryB
         read_instance(c, section, scene, budget);
         return;
     }
+    if (std::optional<JsonCursor> motion = c.get("motion")) {
+        read_moving_shape(c, *motion, type, section, scene, budget);
+        return;
+    }
+    read_still_shape(c, type, section, scene, budget);
+}
+
+void read_still_shape(JsonCursor& c, std::string_view type, const ShapeSection& section, Scene& scene,
+                      MemoryBudget& budget) {
     Shape shape;
     shape.material = material_index(c.require("material"), scene);
     // The media on its two sides (pbrt-v4's MediumInterface); none by default.
@@ -294,6 +313,32 @@ void read_shape(JsonCursor c, const ShapeSection& section, Scene& scene, MemoryB
     if (section.bounds) section.bounds->add(mesh);
     scene.meshes.push_back(std::move(mesh));
     scene.shapes.push_back(shape);
+}
+
+void read_moving_shape(JsonCursor& c, const JsonCursor& motion, std::string_view type, const ShapeSection& section,
+                       Scene& scene, MemoryBudget& budget) {
+    if (section.object)
+        motion.fail(fmt::format("a shape of object {} cannot move: give the instances that place it a \"motion\"",
+                                json_quoted(*section.object)));
+    for (std::string_view key : {"emission", "emission_scale", "two_sided"})
+        if (c.has(key))
+            c.document().fail_at_key(c.pointer(), key,
+                                     "a moving shape cannot emit: animated area lights are not supported (as in "
+                                     "pbrt-v4)");
+    if (auto m = c.get("material"))
+        if (const uint32_t material = material_index(*m, scene); scene.materials[material].surface.cuts_out())
+            motion.fail(fmt::format("a moving shape cannot be cut out: its material {} has alpha < 1",
+                                    json_quoted(scene.material_names[material])));
+    // Its start: the shape's `transform` (a sphere's is its centre and radius), which must be
+    // affine for the path to decompose it.
+    Transform start;
+    const bool placed = type != "sphere" || is_partial_quadric(c, type);  // a whole sphere takes no transform
+    if (std::optional<JsonCursor> t = placed ? c.get("transform") : std::nullopt) {
+        start = read_transform(*t, MatrixRows::kProjective);
+        if (!start.is_affine()) t->fail("a moving shape's transform must be affine (its last row [0, 0, 0, 1])");
+    }
+    read_still_shape(c, type, section, scene, budget);
+    make_shape_move(motion, start, scene);
 }
 
 }  // namespace

@@ -55,13 +55,15 @@ void translate_curve(const Params& p, const GraphicsState& state, Json& shapes, 
     const std::string key = fmt::format("{}|{}|{}|{}|{}|{}|{}", state.material, type, basis, degree,
                                         state.reverse_orientation, state.inside_medium, state.outside_medium);
     CurveRun& run = ctx.curve_run();
-    if (!(run.shapes == &shapes && run.index + 1 == shapes.size() && run.key == key &&
+    // (A moving curve is a shape of its own: its motion is not in the key.)
+    if (state.moving() || !(run.shapes == &shapes && run.index + 1 == shapes.size() && run.key == key &&
           run.ctm.matrix() == state.ctm.matrix())) {
         run = CurveRun{&shapes, shapes.size(), key, state.ctm, ctx.new_curves_name()};
         Json shape{{"type", "curves"}, {"file", run.file}, {"curve_type", type}};
         if (basis != "bezier") shape["basis"] = basis;
         if (degree != 3) shape["degree"] = degree;
         if (!state.ctm.is_identity()) shape["transform"] = transform_json(state.ctm);
+        add_motion(state, shape);
         if (state.reverse_orientation) shape["reverse_orientation"] = true;
         shape["material"] = state.material;
         add_media(state, shape);

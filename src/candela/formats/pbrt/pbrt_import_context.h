@@ -150,6 +150,9 @@ void translate_curve(const Params& params, const GraphicsState& state, Json& sha
                      ImportContext& ctx);
 // pbrt_shapes.cpp: the MediumInterface of `state` on a shape.
 void add_media(const GraphicsState& state, Json& shape);
+// pbrt_shapes.cpp: a moving `state`'s motion (ActiveTransform EndTime) on a shape or instance placed
+// by its CTM times `frame` (applied first): the end CTM times `frame`, with TransformTimes.
+void add_motion(const GraphicsState& state, Json& shape, const Transform& frame = Transform());
 
 // pbrt_media.cpp: a MakeNamedMedium into the document's media; `to_world` is the transformation
 // current at the directive.

@@ -354,18 +354,21 @@ class Importer final : public Target {
         in_world("Shape", at);
         merge_defaults(params, state_.attributes["shape"]);
         Params p(std::move(params), fmt::format("Shape \"{}\"", type), at);
-        if (state_.moving()) {
-            // pbrt-v4 refuses a moving emitter (Shape on an AreaLightSource); candela does not
-            // trace moving shapes yet, so it renders them where they start.
-            if (state_.area_light && !object_) fail(at, "Shape: animated area lights are not supported (as in pbrt-v4)");
-            ctx_.warn(at, "Shape: moving shapes (motion blur) are not supported yet; rendered at the start transform");
-        }
+        // pbrt-v4 refuses a moving emitter (Shape on an AreaLightSource); other moving shapes take
+        // their end transform as a motion (add_motion), except in an object, which its instances move.
+        if (state_.moving() && state_.area_light && !object_)
+            fail(at, "Shape: animated area lights are not supported (as in pbrt-v4)");
         ensure_material();
         // pbrt-v4 looks the media up once the file is read: they may be defined after the shape.
         for (const std::string* m : {&state_.inside_medium, &state_.outside_medium})
             if (!m->empty()) medium_uses_.emplace_back(*m, at);
         if (object_) {
             GraphicsState s = state_;
+            if (s.moving()) {
+                ctx_.warn(at, "Shape: a moving shape inside ObjectBegin is not supported; rendered at the start "
+                              "transform (its ObjectInstance may move)");
+                s.ctm_end = s.ctm;
+            }
             if (s.area_light) {
                 ctx_.warn(at, "area lights inside ObjectBegin are not supported (as in pbrt-v4); the shape does not "
                               "emit");
@@ -412,10 +415,8 @@ class Importer final : public Target {
         if (it->second.empty) return;
         Json& shapes = ctx_.doc()["shapes"];
         Json instance{{"type", "instance"}, {"object", name}};
-        if (state_.moving())
-            ctx_.warn(at, "ObjectInstance: moving instances (motion blur) are not supported yet; rendered at the start "
-                          "transform");
-        if (!state_.ctm.is_identity()) instance["transform"] = transform_json(state_.ctm);
+        if (!state_.ctm.is_identity() || state_.moving()) instance["transform"] = transform_json(state_.ctm);
+        add_motion(state_, instance);
         ctx_.origin(fmt::format("/shapes/{}", shapes.size()), at);
         shapes.push_back(std::move(instance));
     }

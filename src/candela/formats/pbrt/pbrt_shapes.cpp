@@ -149,6 +149,13 @@ void add_media(const GraphicsState& state, Json& shape) {
     shape["exterior"] = state.outside_medium;
 }
 
+void add_motion(const GraphicsState& state, Json& shape, const Transform& frame) {
+    if (!state.moving()) return;
+    Json motion{{"transform", transform_json(state.ctm_end * frame)}};
+    if (state.start_time != 0.0 || state.end_time != 1.0) motion["times"] = Json::array({state.start_time, state.end_time});
+    shape["motion"] = std::move(motion);
+}
+
 namespace {
 
 // An instance of a sphere of radius r at the origin (an object shared by the spheres of the same
@@ -168,7 +175,9 @@ Json sphere_instance(double r, const std::string& material, bool reversed, const
         objects[name] = Json{{"shapes", Json::array({sphere})}};
     }
     const Transform frame = Transform::rotate(Vec3d(1, 0, 0), kPiD / 2);
-    return Json{{"type", "instance"}, {"object", name}, {"transform", transform_json(to_world * frame)}};
+    Json instance{{"type", "instance"}, {"object", name}, {"transform", transform_json(to_world * frame)}};
+    add_motion(state, instance, frame);
+    return instance;
 }
 
 // pbrt-v4's clipped quadrics (cylinder, partial sphere, partial disk) as candela's (quadric.h), in
@@ -214,6 +223,7 @@ std::optional<Json> clipped_quadric(const std::string& type, const Params& p, co
         if (type == "sphere") shape["center"] = Json::array({0.0, 0.0, 0.0});
     }
     if (!ctm.is_identity()) shape["transform"] = transform_json(ctm);
+    add_motion(state, shape);
     if (state.reverse_orientation != ctm.swaps_handedness()) shape["reverse_orientation"] = true;
     if (p.has("alpha")) {
         ctx.warn(p.find("alpha")->location, type + ": alpha on a cylinder, partial sphere or partial disk is not "
@@ -309,6 +319,7 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
         }
         shape = Json{{"type", "mesh"}, {"file", file}};
         if (!ctm.is_identity()) shape["transform"] = transform_json(ctm);
+        add_motion(state, shape);
         if (state.reverse_orientation) shape["reverse_orientation"] = true;
     } else if ((type == "sphere" || type == "disk" || type == "cylinder") && is_clipped(type, p)) {
         double quadric_area = 0;
@@ -340,9 +351,10 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
             shape["radius"] = r * s;
         }
         area = [r, s] { return 4 * kPiD * r * r * s * s; };
-        if (!similarity || needs_sphere_frame(state.material, ctx)) {
+        if (!similarity || needs_sphere_frame(state.material, ctx) || state.moving()) {
             // An ellipsoid, or a sphere whose material reads its surface frame (textures, maps,
-            // anisotropy): an instance of a sphere in pbrt's object space, so that the transform
+            // anisotropy), or that moves (about its own centre, as pbrt-v4's AnimatedTransform
+            // moves it): an instance of a sphere in pbrt's object space, so that the transform
             // is exact and (u, v) are pbrt's (pole on z, not candela's y).
             if (state.area_light || shapes_pointer != "/shapes") {
                 ctx.warn(p.location(), similarity ? "sphere: an emitting or instanced textured sphere keeps candela's "
@@ -362,6 +374,7 @@ void translate_shape(const std::string& type, const Params& p, const GraphicsSta
                      {"normal", Json::array({0.0, 0.0, 1.0})},
                      {"radius", r}};
         if (!ctm.is_identity()) shape["transform"] = transform_json(ctm);
+        add_motion(state, shape);
         if (state.reverse_orientation) shape["reverse_orientation"] = true;
         area = [r, &ctm] {
             const Vec3d u = ctm.apply_vector(Vec3d(r, 0, 0)), v = ctm.apply_vector(Vec3d(0, r, 0));
