@@ -121,5 +121,72 @@ TEST(SceneObjects, InstanceTransformsAreCheckedAgainstTheObject) {
                   "/shapes/0/transform/0/scale/1", "a nonzero scale factor"});
 }
 
+// --- motion (geometry/instance_motion.h)
+
+TEST(SceneObjects, AMovingInstanceKeepsItsPathAndEndTransform) {
+    const Scene s = load_json(scene_with(kTree, R"({"type": "instance", "object": "tree",
+        "transform": [{"translate": [1, 0, 0]}],
+        "motion": {"transform": [{"rotate": {"axis": [0, 1, 0], "angle": 90}}, {"translate": [4, 0, 0]}],
+                   "times": [0, 2]}})"));
+    ASSERT_EQ(s.instances.size(), 1u);
+    ASSERT_EQ(s.instances[0].motion, 0u);
+    ASSERT_EQ(s.instance_motions.size(), 1u);
+    const AnimatedTransform& path = s.instance_motions[0].path;
+    EXPECT_EQ(path.start().apply_point(Vec3d(0, 0, 0)), Vec3d(1, 0, 0));
+    EXPECT_NEAR(path.end().apply_point(Vec3d(1, 0, 0)).z, -1.0, 1e-12);
+    EXPECT_EQ(path.end_time(), 2.0);
+    EXPECT_TRUE(s.instance_motions[0].placement.is_identity());
+    // At the shutter's opening (0) the instance is at its start.
+    EXPECT_EQ(s.instances[0].to_world.m[0][3], 1.0f);
+}
+
+TEST(SceneObjects, AMovingShapeBecomesAOneShapeObjectAndItsInstance) {
+    const Scene s = load_json(scene_with(kTree, R"(
+        {"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0], "material": "m",
+         "transform": [{"translate": [0, 0, 2]}], "motion": {"transform": [{"translate": [3, 0, 2]}]}},
+        {"type": "sphere", "center": [0, 5, 0], "radius": 1, "material": "n",
+         "motion": {"transform": [{"translate": [0, 1, 0]}]}},
+        {"type": "sphere", "center": [0, 9, 0], "radius": 1, "material": "n",
+         "motion": {"transform": []}})"));
+    // tree's two shapes, then the quad, the moving sphere and the sphere whose motion is none.
+    ASSERT_EQ(s.shapes.size(), 5u);
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(s.objects[1].first_shape, 2u);
+    EXPECT_EQ(s.objects[1].shape_count, 1u);
+    EXPECT_EQ(s.objects[2].first_shape, 3u);
+    ASSERT_EQ(s.instances.size(), 2u);
+    ASSERT_EQ(s.instance_motions.size(), 2u);
+    // The quad's geometry is placed at its start; the placement takes it back to the quad's space.
+    EXPECT_EQ(s.meshes.back().positions[0], Vec3f(0, 0, 2));
+    const InstanceMotion& quad = s.instance_motions[0];
+    EXPECT_EQ((quad.path.end() * quad.placement).apply_point(Vec3d(0, 0, 2)), Vec3d(3, 0, 2));
+    // A whole sphere starts where its centre is: the end moves it up by 1.
+    const InstanceMotion& sphere = s.instance_motions[1];
+    EXPECT_EQ((sphere.path.end() * sphere.placement).apply_point(Vec3d(0, 5, 0)), Vec3d(0, 6, 0));
+}
+
+TEST(SceneObjects, BadMotionsAreLocatedErrors) {
+    const std::string quad = R"({"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0], )";
+    auto error_at = [&](const std::string& shapes, const std::string& objects = "") {
+        return load_error(scene_with(objects, shapes)).where().json_pointer;
+    };
+    EXPECT_EQ(error_at(quad + R"("material": "m", "motion": [1, 2]})"), "/shapes/0/motion");
+    EXPECT_EQ(error_at(quad + R"("material": "m", "motion": {"times": [0, 1]}})"), "/shapes/0/motion");
+    EXPECT_EQ(error_at(quad + R"("material": "m", "motion": {"transform": [{"scale": [-1, 1, 1]}]}})"),
+              "/shapes/0/motion/transform");
+    EXPECT_EQ(error_at(quad + R"("material": "m", "motion": {"transform": [], "times": [1, 1]}})"),
+              "/shapes/0/motion/times/1");
+    EXPECT_EQ(error_at(quad + R"("material": "m", "emission": 1, "motion": {"transform": []}})"), "/shapes/0");
+    EXPECT_EQ(error_at(quad + R"("material": "m", "motion": {"transform": [], "speed": 1}})"), "/shapes/0/motion");
+    EXPECT_EQ(error_at("", R"("o": {"shapes": [)" + quad +
+                               R"("material": "m", "motion": {"transform": [{"translate": [1, 0, 0]}]}}]})"),
+              "/objects/o/shapes/0/motion");
+    EXPECT_EQ(error_at(quad + R"("material": "m", "motion": {"transform": [{"translate": [1e38, 0, 0]}, {"scale": 100}]}})"),
+              "/shapes/0/motion");
+    EXPECT_EQ(error_at(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m",
+                          "transform": [], "motion": {"transform": []}})"),
+              "/shapes/0");  // a whole sphere takes no transform, moving or not
+}
+
 }  // namespace
 }  // namespace candela

@@ -92,7 +92,7 @@ TEST(SceneLoaderQuadrics, BadValuesAreLocated) {
                  "expected a nonzero scale factor, got 0");
     expect_error(R"("type": "cylinder", "radius": 1, "height": 1)", "/shapes/0",
                  "unknown key \"height\"; expected one of: emission, emission_scale, exterior, interior, material, "
-                 "phi_max, radius, reverse_orientation, transform, two_sided, type, z_max, z_min");
+                 "motion, phi_max, radius, reverse_orientation, transform, two_sided, type, z_max, z_min");
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "candela/core/error.h"
+#include "candela/formats/json/scene_loader.h"
 #include "candela/formats/pbrt/pbrt_importer.h"
 #include "candela/formats/pbrt/pbrt_scene_loader.h"
 #include "candela/scene/enum_names.h"
@@ -373,11 +374,47 @@ TEST(PbrtImporter, EndTimeTransformsMoveTheCamera) {
     EXPECT_FALSE(import(std::string("Camera \"perspective\"\nWorldBegin\n") + kLight).document["camera"].contains("motion"));
 }
 
-TEST(PbrtImporter, MovingShapesAndLightsWarnAndUseTheStartTransform) {
+TEST(PbrtImporter, MovingLightsWarnAndUseTheStartTransform) {
     const ImportedScene s = import(std::string("WorldBegin\nActiveTransform EndTime\nTranslate 1 0 0\n"
                                                "ActiveTransform All\nLightSource \"point\"\nShape \"sphere\"\n"));
     EXPECT_TRUE(has_warning(s.warnings, "animated lights are not supported"));
-    EXPECT_TRUE(has_warning(s.warnings, "moving shapes (motion blur) are not supported yet"));
+    EXPECT_FALSE(has_warning(s.warnings, "moving shape"));
+}
+
+TEST(PbrtImporter, EndTimeTransformsMoveShapesAndInstances) {
+    const ImportedScene s = import(std::string("WorldBegin\nObjectBegin \"o\"\nShape \"disk\"\nObjectEnd\n"
+                                               "TransformTimes 0 2\nAttributeBegin\nTranslate 0 1 0\n"
+                                               "ActiveTransform EndTime\nTranslate 3 0 0\nActiveTransform All\n"
+                                               "Shape \"disk\"\nShape \"sphere\"\nObjectInstance \"o\"\n"
+                                               "AttributeEnd\n") +
+                                   kLight);
+    const auto& shapes = s.document["shapes"];
+    // The disk: its start transform and, as its motion, the end one (x + 3) with the times.
+    const auto& disk = shapes[0];
+    ASSERT_TRUE(disk.contains("motion")) << disk.dump();
+    EXPECT_DOUBLE_EQ(disk["transform"][0]["matrix"][7].get<double>(), 1.0);
+    EXPECT_DOUBLE_EQ(disk["motion"]["transform"][0]["matrix"][3].get<double>(), 3.0);
+    EXPECT_DOUBLE_EQ(disk["motion"]["transform"][0]["matrix"][7].get<double>(), 1.0);
+    EXPECT_EQ(disk["motion"]["times"][1].get<double>(), 2.0);
+    // The sphere: an instance of a sphere in pbrt's object space, so that it moves about its centre.
+    EXPECT_EQ(shapes[1]["type"], "instance");
+    EXPECT_TRUE(shapes[1].contains("motion"));
+    // The object's shape does not move; its instance does.
+    EXPECT_FALSE(s.document["objects"]["o"]["shapes"][0].contains("motion"));
+    EXPECT_EQ(shapes[2]["type"], "instance");
+    EXPECT_DOUBLE_EQ(shapes[2]["motion"]["transform"][0]["matrix"][3].get<double>(), 3.0);
+    for (const auto& w : s.warnings) ADD_FAILURE() << "unexpected warning: " << w;
+    // The document loads: two moving shapes (disk, sphere) and the moving instance.
+    const Scene scene = load_scene_from_string(s.document.dump(), "moving.json");
+    EXPECT_EQ(scene.instance_motions.size(), 3u);
+}
+
+TEST(PbrtImporter, AMovingShapeInAnObjectWarns) {
+    const ImportedScene s = import(std::string("WorldBegin\nObjectBegin \"o\"\nActiveTransform EndTime\nTranslate 3 0 0\n"
+                                               "ActiveTransform All\nShape \"disk\"\nObjectEnd\n") +
+                                   kLight);
+    EXPECT_TRUE(has_warning(s.warnings, "a moving shape inside ObjectBegin is not supported"));
+    EXPECT_FALSE(s.document["objects"]["o"]["shapes"][0].contains("motion"));
 }
 
 TEST(PbrtImporter, HairIsImportedWithPbrtsPrecedenceOfAbsorptions) {
