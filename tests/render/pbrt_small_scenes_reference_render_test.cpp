@@ -11,8 +11,8 @@
 //
 // Curves (issue 25): tests/data/pbrt-curves/ (README.md there), the same way; a named camera
 // sensor with maxcomponentvalue: tests/data/pbrt-sensor/; cylinders, partial spheres and partial
-// disks: tests/data/pbrt-shapes/ (README.md there); motion blur (a moving camera):
-// tests/data/pbrt-motion/.
+// disks: tests/data/pbrt-shapes/ (README.md there); motion blur (a moving camera, moving shapes
+// and a moving instance): tests/data/pbrt-motion/.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -41,6 +41,7 @@ constexpr SmallScene kScenes[] = {
     {"cloud-box", 0.01, 0.05},      {"vdb-smoke", 0.01, 0.04},     {"curves-diffuse", 0.01, 0.02, "pbrt-curves"},
     {"curves-hair", 0.01, 0.065, "pbrt-curves"},   {"sensor-caustic", 0.006, 0.055, "pbrt-sensor"},
     {"shapes", 0.01, 0.025, "pbrt-shapes"},         {"camera-pan", 0.01, 0.02, "pbrt-motion"},
+    {"shapes-move", 0.01, 0.02, "pbrt-motion"},
 };
 
 // gtest prints the scene's name, not its bytes.
