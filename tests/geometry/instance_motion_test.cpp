@@ -223,10 +223,11 @@ TEST(InstanceMotion, RaysLeavingAMovingSurfaceDoNotHitItAgain) {
         EXPECT_EQ(out.time, u);
         if (const std::optional<SurfaceHit> next = moving.accel->intersect(out); next && next->shape_id == h->shape_id)
             ++again;
-        if (h->shape_id == 0)
-            if (const std::optional<SurfaceHit> next = moving.accel->intersect(spawn_ray(*h, normalize(ray.d + n * 1e-3f)));
-                next && next->shape_id == 0)
+        if (h->shape_id == 0) {
+            const Ray through = spawn_ray(*h, normalize(ray.d + n * 1e-3f));
+            if (const std::optional<SurfaceHit> next = moving.accel->intersect(through); next && next->shape_id == 0)
                 ++again;
+        }
     }
     std::printf("moving instance: %d hits, Embree's point from the keys' by at most %.3g |p|\n", hits, worst_gap);
     EXPECT_GT(hits, 15000);

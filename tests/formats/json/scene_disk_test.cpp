@@ -92,7 +92,8 @@ TEST(SceneLoaderDisk, BadValuesAreLocated) {
                  "/shapes/0/transform", "the transform leaves the disk with no area in float precision");
     expect_error(R"("center": [0, 0, 0], "normal": [0, 1, 0], "radius": 1, "edge1": [1, 0, 0])", "/shapes/0",
                  "unknown key \"edge1\"; expected one of: center, emission, emission_scale, exterior, inner_radius, "
-                 "interior, material, motion, normal, phi_max, radius, reverse_orientation, transform, two_sided, type");
+                 "interior, material, motion, normal, phi_max, radius, reverse_orientation, transform, two_sided, "
+                 "type");
 }
 
 }  // namespace

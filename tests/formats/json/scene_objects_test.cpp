@@ -181,7 +181,8 @@ TEST(SceneObjects, BadMotionsAreLocatedErrors) {
     EXPECT_EQ(error_at("", R"("o": {"shapes": [)" + quad +
                                R"("material": "m", "motion": {"transform": [{"translate": [1, 0, 0]}]}}]})"),
               "/objects/o/shapes/0/motion");
-    EXPECT_EQ(error_at(quad + R"("material": "m", "motion": {"transform": [{"translate": [1e38, 0, 0]}, {"scale": 100}]}})"),
+    EXPECT_EQ(error_at(quad +
+                       R"("material": "m", "motion": {"transform": [{"translate": [1e38, 0, 0]}, {"scale": 100}]}})"),
               "/shapes/0/motion");
     EXPECT_EQ(error_at(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m",
                           "transform": [], "motion": {"transform": []}})"),

@@ -410,8 +410,8 @@ TEST(PbrtImporter, EndTimeTransformsMoveShapesAndInstances) {
 }
 
 TEST(PbrtImporter, AMovingShapeInAnObjectWarns) {
-    const ImportedScene s = import(std::string("WorldBegin\nObjectBegin \"o\"\nActiveTransform EndTime\nTranslate 3 0 0\n"
-                                               "ActiveTransform All\nShape \"disk\"\nObjectEnd\n") +
+    const ImportedScene s = import(std::string("WorldBegin\nObjectBegin \"o\"\nActiveTransform EndTime\n"
+                                               "Translate 3 0 0\nActiveTransform All\nShape \"disk\"\nObjectEnd\n") +
                                    kLight);
     EXPECT_TRUE(has_warning(s.warnings, "a moving shape inside ObjectBegin is not supported"));
     EXPECT_FALSE(s.document["objects"]["o"]["shapes"][0].contains("motion"));

@@ -152,7 +152,8 @@ void add_media(const GraphicsState& state, Json& shape) {
 void add_motion(const GraphicsState& state, Json& shape, const Transform& frame) {
     if (!state.moving()) return;
     Json motion{{"transform", transform_json(state.ctm_end * frame)}};
-    if (state.start_time != 0.0 || state.end_time != 1.0) motion["times"] = Json::array({state.start_time, state.end_time});
+    if (state.start_time != 0.0 || state.end_time != 1.0)
+        motion["times"] = Json::array({state.start_time, state.end_time});
     shape["motion"] = std::move(motion);
 }
 
