@@ -119,6 +119,17 @@ TEST(MpiRender, GivesTheBitsOfOneProcessForEveryRankAndThreadCount) {
     expect_same_images(dir, "tiles5", "one");
 }
 
+// Motion blur (scenes/motion-blur: moving shapes and a moving instance): each sample's time comes
+// from the sampler, so ranks give one process's bits.
+TEST(MpiRender, GivesTheBitsOfOneProcessWithMovingShapes) {
+    const fs::path dir = temp_dir("motion");
+    const std::string motion = std::string(CANDELA_SOURCE_DIR) + "/scenes/motion-blur/scene.json";
+    ASSERT_EQ(run_alone(render_args(dir, "one", "2", 2, {}, motion), dir / "one.log").exit_code, 0);
+    const CliRun r = run_mpi(2, render_args(dir, "two", "2", 1, {}, motion), dir / "two.log");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    expect_same_images(dir, "two", "one");
+}
+
 // Volpath in a scene with media (the fog room: fog around the camera, amber glass, a spot light):
 // its medium walks draw from generators seeded by the sampler, so ranks give one process's bits.
 TEST(MpiRender, GivesTheBitsOfOneProcessWithMedia) {
