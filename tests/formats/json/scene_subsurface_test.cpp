@@ -72,7 +72,8 @@ TEST(SceneLoaderSubsurface, KeysChangeTheMaterial) {
 }
 
 TEST(SceneLoaderSubsurface, NamedMediumIsTheMediaPresetsTable) {
-    const Subsurface& ss = only_subsurface(with_material(R"({"type": "subsurface", "name": "Skin1", "scale": 2})"));
+    const Scene s = with_material(R"({"type": "subsurface", "name": "Skin1", "scale": 2})");
+    const Subsurface& ss = only_subsurface(s);
     // Jensen et al. 2001 via pbrt-v4: Skin1 sigma_s' (0.74, 0.88, 1.01), sigma_a (0.032, 0.17, 0.48), per mm.
     EXPECT_EQ(ss.sigma_s.value, Rgb(0.74f, 0.88f, 1.01f));
     EXPECT_EQ(ss.sigma_a.value, Rgb(0.032f, 0.17f, 0.48f));

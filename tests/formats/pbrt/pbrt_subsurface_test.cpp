@@ -22,9 +22,12 @@ ImportedScene import(const std::string& material) {
                               kFile);
 }
 
-// The JSON material of the first shape.
+// The document's subsurface material (the importer may place the spheres as instances).
 nlohmann::ordered_json material_of(const ImportedScene& s) {
-    return s.document["materials"][s.document["shapes"][0]["material"].get<std::string>()];
+    for (const auto& [name, m] : s.document["materials"].items())
+        if (m["type"] == "subsurface") return m;
+    ADD_FAILURE() << "no subsurface material";
+    return {};
 }
 
 std::string error_of(const std::string& material) {
@@ -83,7 +86,7 @@ TEST(PbrtSubsurface, GWithANamedMediumWarnsAndIsZero) {
 
 TEST(PbrtSubsurface, ErrorsAreLocated) {
     EXPECT_NE(error_of("Material \"subsurface\" \"rgb sigma_a\" [1 1 1]")
-                  .find("inline.pbrt:3:24: subsurface: provided \"sigma_a\" parameter without \"sigma_s\""),
+                  .find("inline.pbrt:3:23: subsurface: provided \"sigma_a\" parameter without \"sigma_s\""),
               std::string::npos)
         << error_of("Material \"subsurface\" \"rgb sigma_a\" [1 1 1]");
     const std::string unknown = error_of("Material \"subsurface\" \"string name\" \"Milk\"");
