@@ -2,6 +2,15 @@
 // sample_sr against the radial density 2 pi r pdf_sr(r) of the sampled channel; the exit points
 // where probe segments from sample_sp cross a plane tilted against the normal (so that all three
 // projection axes reach it) against pdf_sp; and the exit lobe's cosine sampling.
+//
+// Controls, run once each (1,000,000 samples, both sources of random numbers reject every time):
+// - radii against the density of a medium with 5% more extinction: p < 1e-180 in all four;
+// - radii drawn with pbrt-v4's absolute tolerance 1e-6 in the spline inversion (before the
+//   change in math/catmull_rom.cpp): the low-albedo case rejects at p = 5e-17, its far tail
+//   piled onto a node (53 and 37 samples where 14 are expected, 0 in the next cells);
+// - probe axes drawn with probabilities 1/3 each instead of 1/4, 1/4, 1/2: chi2 = 8792 and 19999
+//   on 1439 degrees of freedom;
+// - the exit lobe's directions against f cos (which integrates to 1 too): chi2 = 27784 on 2449.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -105,8 +114,8 @@ struct PlaneDomain {
 // A segment is the part inside the sphere of radius r_max about po of a line along its axis,
 // so it reaches the plane exactly where the plane lies within r_max of po: the density of hits
 // is pdf_sp there and 0 beyond. The domain ends at r_max, so a hit beyond it fails at once.
-// The pdf integrates over the disk to the probability that a probe finds the plane (0.86 and
-// 0.91 here; over the whole plane pdf_sp integrates to 1, TabulatedBssrdf's unit test).
+// The pdf integrates over the disk to the probability that a probe finds the plane (0.991 and
+// 0.977 here: r_max holds 99.9% of the radii, and oblique probes reach beyond r_max).
 void expect_probe_hits_fit(const Vec3f& plane_normal, const Color& sigma_a, const Color& sigma_s) {
     const Vec3f po(0.5f, -1.0f, 2.0f), ns = normalize(Vec3f(0.2f, 0.1f, 1.0f));
     const int hero = 0;
@@ -136,7 +145,7 @@ void expect_probe_hits_fit(const Vec3f& plane_normal, const Color& sigma_a, cons
     };
     Chi2Result r = chi2_test(domain, sampler, pdf, opt);
     EXPECT_TRUE(r.passed) << r.message;
-    EXPECT_GT(r.pdf_integral, 0.5);
+    EXPECT_GT(r.pdf_integral, 0.95);
     EXPECT_LT(r.pdf_integral, 1.0);
 }
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <span>
 
+#include <tbb/parallel_for.h>
+
 #include "candela/materials/fresnel.h"
 #include "candela/math/catmull_rom.h"
 #include "candela/math/constants.h"
@@ -93,7 +95,10 @@ BssrdfTable make_beam_diffusion_table(float g, float eta) {
         t.rho_samples[i] = (1.0f - std::exp(-8.0f * static_cast<float>(i) / (kRhoSamples - 1))) /
                            (1.0f - std::exp(-8.0f));
 
-    for (int i = 0; i < kRhoSamples; ++i) {
+    // 6,400 entries of 200 exponentials each: 60 ms on one core, so the albedos' rows are
+    // computed in parallel (load-time work, the one use of TBB in materials/; each row is
+    // independent, so the table's bits do not depend on the thread count).
+    tbb::parallel_for(0, kRhoSamples, [&t, g, eta](int i) {
         const float rho = t.rho_samples[i];
         const size_t row = static_cast<size_t>(i) * kRadiusSamples;
         for (int j = 0; j < kRadiusSamples; ++j) {
@@ -105,7 +110,7 @@ BssrdfTable make_beam_diffusion_table(float g, float eta) {
         t.rho_eff[i] = integrate_catmull_rom(t.radius_samples,
                                              std::span<const float>(&t.profile[row], kRadiusSamples),
                                              std::span<float>(&t.profile_cdf[row], kRadiusSamples));
-    }
+    });
     return t;
 }
 
