@@ -158,10 +158,12 @@ void apply_overrides(const RenderOverrides& o, Scene& scene) {
             scene.warnings.push_back(fmt::format("--integrator {}: the scene has participating media, which the {} "
                                                  "integrator ignores (it renders them as vacuum); use volpath",
                                                  integrator_type_name(*o.integrator), integrator_type_name(*o.integrator)));
-        if (!sees_media && has_tabulated_subsurface(scene))
+        if (!sees_media && has_tabulated_subsurface(scene)) {
+            const auto name = integrator_type_name(*o.integrator);
             scene.warnings.push_back(fmt::format("--integrator {}: the scene has subsurface materials, of which the {} "
                                                  "integrator renders only the dielectric boundary; use volpath",
-                                                 integrator_type_name(*o.integrator), integrator_type_name(*o.integrator)));
+                                                 name, name));
+        }
     }
     if (o.spectral) scene.integrator.spectral = *o.spectral;
     if (o.sampler) scene.sampler.type = *o.sampler;
