@@ -157,6 +157,25 @@ TEST(TabulatedBssrdfChi2, ProbeHitsOnASteepPlaneFollowPdfSp) {
                           Color(0.98f, 0.5f, 0.5f));
 }
 
+// pdf_sp integrates to 1 over a whole plane through po that every projection axis crosses
+// (each axis's term is pdf_sr of the projected radius times the projection's Jacobian |n . axis|),
+// and to 1/2 over the tangent plane, which only probes along ns reach; the table's radii end at
+// 203 mean free paths, which the domain (to 2,000) contains. Sampling truncates at r_max
+// (above: 0.991 and 0.977 of it is found). Quadrature to 1e-6 per cell; 30 x 12 cells.
+TEST(TabulatedBssrdfChi2, PdfSpIntegratesToOneOverAPlane) {
+    const Vec3f po(0.5f, -1.0f, 2.0f), ns = normalize(Vec3f(0.2f, 0.1f, 1.0f));
+    const TabulatedBssrdf b(po, ns, 1.33f, Color(0.3f), Color(2.7f), &table_133(), 0);
+    for (const Vec3f& n : {normalize(Vec3f(0.6f, -0.5f, 0.62f)), ns}) {
+        PlaneDomain domain{po, Frame::from_normal(n)};
+        domain.length = 1.0 / 3.0;
+        domain.q_max = 2000.0 / 2001.0;
+        auto pdf = [&](Vec3f p) { return b.pdf_sp(p, n)[0]; };
+        double integral = 0.0;
+        for (double cell : integrate_cells(domain, pdf, 30, 12, 1.0, 1e-6)) integral += cell;
+        EXPECT_NEAR(integral, n == ns ? 0.5 : 1.0, 1e-3);
+    }
+}
+
 TEST(TabulatedBssrdfChi2, ExitLobeSamplesItsPdf) {
     const NormalizedFresnel lobe{1.33f};
     Chi2Options opt;
