@@ -212,5 +212,38 @@ TEST(Schlick, ExactAtNormalIncidenceAndOneAtGrazing) {
     }
 }
 
+// The Fresnel moments' polynomial fits against the integral they fit, int_0^1 R(mu) mu^k dmu
+// for light inside a medium of relative index eta meeting the boundary (R from the angle forms
+// above, 1 beyond the critical angle), by the midpoint rule on 20,000 intervals (40,000 moves
+// the integrals by < 1.1e-6). The fits' largest errors on the grid below are 1.9e-5 (first
+// moment) and 1.5e-5 (second) for eta <= 0.9, and 5e-4 and 1.2e-3 for eta >= 1.2; near 1, where the
+// moments fall to 0 with a kink, the fits are worse (8e-4 and 1.5e-3 at 1.1) and are not tested.
+// Control: reading the argument as the outside's index over the inside's (R from outside, as
+// the name invEta in pbrt-v4's header suggests) misses by 0.2 at 1.33.
+double fresnel_moment_reference(double eta, int k, bool from_inside = true) {
+    const int n = 20000;
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        double mu = (i + 0.5) / n;
+        double theta = std::acos(mu);
+        double n1 = from_inside ? eta : 1.0, n2 = from_inside ? 1.0 : eta;
+        double r = n1 / n2 * std::sin(theta) >= 1.0 ? 1.0 : fresnel_reference(theta, n1, n2);
+        sum += r * std::pow(mu, k);
+    }
+    return sum / n;
+}
+
+TEST(Fresnel, MomentFitsMatchTheirIntegrals) {
+    for (double eta : {0.5, 0.6, 0.67, 0.75, 0.8, 0.9, 1.2, 1.33, 1.4, 1.5, 1.7, 2.0}) {
+        const double tolerance1 = eta < 1.0 ? 3e-5 : 1e-3, tolerance2 = eta < 1.0 ? 3e-5 : 2e-3;
+        const auto eta_f = static_cast<float>(eta);
+        EXPECT_NEAR(fresnel_moment1(eta_f), fresnel_moment_reference(eta, 1), tolerance1) << "eta " << eta;
+        EXPECT_NEAR(fresnel_moment2(eta_f), fresnel_moment_reference(eta, 2), tolerance2) << "eta " << eta;
+    }
+    // 2 FM1(eta) is the reflectance to a uniform flux from inside; from outside it is 2 FM1(1 / eta).
+    EXPECT_NEAR(fresnel_moment1(1.0f / 1.33f), fresnel_moment_reference(1.33, 1, false), 2e-5);
+    EXPECT_GT(std::abs(static_cast<double>(fresnel_moment1(1.33f)) - fresnel_moment_reference(1.33, 1, false)), 0.2);
+}
+
 }  // namespace
 }  // namespace candela

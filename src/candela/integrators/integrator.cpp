@@ -33,9 +33,10 @@ TransportIntegrator::TransportIntegrator(const Scene& scene, const Accelerator& 
 
 namespace {
 
-// Whether a scene has anything only volpath's loop handles: media or `interface` surfaces.
+// Whether a scene has anything only volpath's loop handles: media, `interface` surfaces or the
+// tabulated BSSRDF of subsurface materials.
 bool needs_volume_transport(const Scene& scene) {
-    return !scene.media.empty() || has_interface_material(scene);
+    return !scene.media.empty() || has_interface_material(scene) || has_tabulated_subsurface(scene);
 }
 
 }  // namespace

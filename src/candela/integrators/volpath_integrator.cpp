@@ -5,6 +5,7 @@
 
 #include "candela/core/mix_bits.h"
 #include "candela/integrators/path_common.h"
+#include "candela/materials/tabulated_bssrdf.h"
 #include "candela/media/majorant_tracking.h"
 #include "candela/sampling/henyey_greenstein.h"
 
@@ -171,6 +172,85 @@ struct VolumePath {
         r_u *= r_p * pdf(ls->wi);
         return beta * f_hat * T * ls->Le / pc.average(r_l + r_u);
     }
+
+    // pbrt-v4's tabulated BSSRDF (VolPathIntegrator::Li), where the path has just refracted into
+    // subsurface material `ss` at `entry` (shading normal `ns`) of a shape of material `material`:
+    // a probe segment from the profile (TabulatedBssrdf::sample_sp), one of its hits on shapes of
+    // the same material kept by weighted reservoir sampling (weight 1: each with probability 1/n),
+    // beta *= Sp / (pdf[hero] / n) and r_u *= pdf / pdf[hero] (spectral MIS over the channels'
+    // radius sampling); then at the exit point next-event estimation and the next direction by
+    // the NormalizedFresnel lobe, in the medium `outside` (the path's before it entered). Depth
+    // does not grow (as in pbrt-v4). Its numbers are drawn from the sampler first, in a fixed
+    // order: probe axis and radius (3), the reservoir's seed, the light's (3), the exit direction
+    // (2). Returns false when the path ends.
+    bool cross_subsurface(const Subsurface& ss, uint32_t material, const SurfaceHit& entry, const Vec3f& ns,
+                          uint32_t outside, Sampler& sampler, bool next_event, Color& L, Color& beta, Color& r_u,
+                          Color& r_l, Ray& ray, uint32_t& medium, Vec3f& prev_p, Vec3f& prev_n, Rng& rng) const {
+        const float u_axis = sampler.next_float();
+        const Vec2f u_radius = sampler.next_vec2f();
+        const float u_pick = sampler.next_float();
+        const LightNumbers light_numbers = draw_light_numbers(sampler, lights);
+        const Vec2f u_exit = sampler.next_vec2f();
+
+        Color sigma_a, sigma_s;
+        const Vec2f uv = ss.is_textured() ? accel.uv(entry) : Vec2f();
+        ss.coefficients(scene.textures, TextureContext{uv, entry.p, pc.ch.lambda, entry.ng}, sigma_a, sigma_s);
+        const TabulatedBssrdf bssrdf(entry.p, ns, ss.eta, sigma_a, sigma_s, &ss.table, pc.hero);
+        const std::optional<BssrdfProbeSegment> probe = bssrdf.sample_sp(u_axis, u_radius.x, u_radius.y);
+        if (!probe) return false;
+
+        // Every surface along the segment; those of the material are the candidates (at most
+        // kMaxMediumEvents surfaces, a bound no geometry short of a pathological one meets).
+        Rng pick(mix_bits(uint64_t(std::bit_cast<uint32_t>(u_pick))), 0x2545f4914f6cdd1dull);
+        std::optional<SurfaceHit> exit;
+        int candidates = 0;
+        Ray r{probe->p0, probe->p1 - probe->p0, 0.0f, 1.0f};
+        for (int hits = 0; hits < kMaxMediumEvents; ++hits) {
+            ++counters.bounce;
+            std::optional<SurfaceHit> h = accel.intersect(r);
+            if (!h) break;
+            if (scene.shapes[h->shape_id].material == material && pick.next_float() * float(++candidates) < 1.0f)
+                exit = h;
+            r = spawn_ray_to(*h, probe->p1);
+        }
+        if (!exit) return false;
+        const Color Sp = bssrdf.sp(exit->p);
+        const Color pdf = bssrdf.pdf_sp(exit->p, exit->ng);
+        const float pdf_hero = pdf[pc.hero] / float(candidates);
+        if (!(pdf_hero > 0.0f) || Sp.is_black()) return false;
+        beta *= Sp / pdf_hero;
+        r_u *= pdf / pdf[pc.hero];
+        if (!beta.is_finite()) return false;
+
+        // The exit: pbrt-v4's NormalizedFresnelBxDF in the frame of the hit's shading normal,
+        // with wo that normal.
+        const Shape& shape = scene.shapes[exit->shape_id];
+        const NormalizedFresnel lobe{ss.eta};
+        const Frame frame = Frame::from_normal(exit->ns);
+        const Vec3f wo(0.0f, 0.0f, 1.0f);
+        if (next_event && !lights.empty()) {
+            auto f = [&](const Vec3f& wi_world) {
+                const Vec3f wi = frame.to_local(normalize(wi_world));
+                return lobe.eval(wo, wi, TransportMode::kRadiance) * std::abs(wi.z);
+            };
+            auto pdf_of = [&](const Vec3f& wi_world) { return lobe.pdf(wo, frame.to_local(normalize(wi_world))); };
+            auto spawn = [&](const LightSample& ls) {
+                return ls.infinite ? spawn_ray(*exit, ls.wi) : spawn_ray_to(*exit, ls.p);
+            };
+            auto medium_of = [&](const Vec3f& wi) { return medium_after(shape, *exit, wi, outside); };
+            L += direct_light(exit->p, exit->ns, light_numbers, beta, r_u, f, pdf_of, spawn, medium_of, rng);
+        }
+        const std::optional<BsdfSample> bs = lobe.sample(wo, 0.0f, u_exit, TransportMode::kRadiance);
+        if (!bs || !(bs->pdf > 0.0f)) return false;
+        beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
+        r_l = r_u / bs->pdf;
+        const Vec3f wi = frame.to_world(bs->wi);
+        ray = spawn_ray(*exit, wi);
+        medium = medium_after(shape, *exit, wi, outside);
+        prev_p = exit->p;
+        prev_n = exit->ns;
+        return true;
+    }
 };
 
 }  // namespace
@@ -213,6 +293,7 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
             const float t_max = hit ? hit->t : kInfinity;
             const Medium& m = scene_.media[medium];
             const float g = medium_g(m);
+            const bool counts_bounces = medium_counts_bounces(m);
             const Color T_maj = visit(
                 [&](const auto& med) {
                     return sample_majorant_transmittance(
@@ -238,7 +319,8 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
                             }
                             if (um < p_absorb + p_scatter) {
                                 // A real scattering: NEE, then the phase function's direction.
-                                if (depth++ >= settings.max_depth) {
+                                // A subsurface random walk's steps are not the path's bounces.
+                                if (counts_bounces && depth++ >= settings.max_depth) {
                                     terminated = true;
                                     return false;
                                 }
@@ -341,7 +423,17 @@ Color VolPathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCount
         if (bs->is_transmission) eta_scale *= sqr(bs->eta);
         prev_p = hit->p;
         prev_n = v.frame.n;
-        medium = medium_after(shape, *hit, ray.d, medium);
+        // Into a subsurface material by the tabulated BSSRDF: out again at the probe's exit.
+        if (v.material->subsurface != kNoSubsurface && bs->is_transmission &&
+            scene_.subsurfaces[v.material->subsurface].method == SubsurfaceMethod::kTabulated) {
+            if (!path.cross_subsurface(scene_.subsurfaces[v.material->subsurface], shape.material, *hit, v.frame.n,
+                                       medium, sampler, next_event_, L, beta, r_u, r_l, ray, medium, prev_p, prev_n,
+                                       rng))
+                break;
+            specular_bounce = false;
+        } else {
+            medium = medium_after(shape, *hit, ray.d, medium);
+        }
         if (!survive_volume_roulette(beta, r_u, eta_scale, depth, settings, pc, roulette_number)) break;
     }
     return L;

@@ -14,8 +14,13 @@
 // per path (each of the three with probability 1/3): fixing it to red would never sample the
 // scattering of a medium whose red coefficient is 0.
 //
-// A scene without media and without `interface` surfaces renders with the path integrator
-// (make_integrator): the same bits, the same speed. Without next-event estimation (next_event
+// Subsurface materials (materials/subsurface.h): a path that refracts into one by the tabulated
+// method leaves at an exit point found by probe rays (pbrt-v4's BSSRDF sampling, in
+// cross_subsurface); by the random walk it enters the material's medium, whose scatterings do not
+// count toward max_depth.
+//
+// A scene without media, `interface` surfaces and tabulated subsurface materials renders with
+// the path integrator (make_integrator): the same bits, the same speed. Without next-event estimation (next_event
 // false: the `bsdf` integrator on a scene with media) light is found only by scattering into it,
 // the estimator that checks volpath's light sampling and shadow rays (tests/integrators/).
 #include "candela/integrators/transport_integrators.h"

@@ -91,4 +91,30 @@ CANDELA_HD inline float fresnel_schlick(float r0, float cos_theta) {
     return r0 + (1.0f - r0) * c2 * c2 * c;
 }
 
+// The first and second moments of the Fresnel reflectance met by light inside a medium of
+// relative index eta (inside over outside) as it reaches the boundary:
+//   fresnel_moment_k(eta) = int_0^1 fresnel_dielectric(mu, 1 / eta) mu^k dmu,
+// so 2 fresnel_moment1(eta) is the reflectance of the boundary to a uniform (Lambertian) flux
+// from inside, and 2 fresnel_moment1(1 / eta) that to one from outside. Polynomial fits, eta in
+// about [0.5, 2] (d'Eon and Irving 2011; pbrt-v4 FresnelMoment1, FresnelMoment2), so that the
+// photon beam diffusion profile (bssrdf_table.h) is pbrt-v4's; tests/materials/fresnel_test.cpp
+// compares them with the integral.
+CANDELA_HD inline float fresnel_moment1(float eta) {
+    float eta2 = eta * eta, eta3 = eta2 * eta, eta4 = eta3 * eta, eta5 = eta4 * eta;
+    if (eta < 1.0f)
+        return 0.45966f - 1.73965f * eta + 3.37668f * eta2 - 3.904945f * eta3 + 2.49277f * eta4 -
+               0.68441f * eta5;
+    return -4.61686f + 11.1136f * eta - 10.4646f * eta2 + 5.11455f * eta3 - 1.27198f * eta4 +
+           0.12746f * eta5;
+}
+CANDELA_HD inline float fresnel_moment2(float eta) {
+    float eta2 = eta * eta, eta3 = eta2 * eta, eta4 = eta3 * eta, eta5 = eta4 * eta;
+    if (eta < 1.0f)
+        return 0.27614f - 0.87350f * eta + 1.12077f * eta2 - 0.65095f * eta3 + 0.07883f * eta4 +
+               0.04860f * eta5;
+    float r_eta = 1.0f / eta, r_eta2 = r_eta * r_eta, r_eta3 = r_eta2 * r_eta;
+    return -547.033f + 45.3087f * r_eta3 - 218.725f * r_eta2 + 458.843f * r_eta + 404.557f * eta -
+           189.519f * eta2 + 54.9327f * eta3 - 9.00603f * eta4 + 0.63942f * eta5;
+}
+
 }  // namespace candela

@@ -20,6 +20,9 @@
 
 namespace candela {
 
+// Material::subsurface of a material without subsurface scattering.
+inline constexpr uint32_t kNoSubsurface = 0xffffffffu;
+
 struct Material {
     Bsdf bsdf;  // the lobes at the parameters' constant values (all of them when !textured)
     std::array<LobeParams, Bsdf::kMaxLobes> params{};  // lobe k of bsdf comes from params[k]
@@ -43,6 +46,10 @@ struct Material {
     // bsdf, whitted) go straight through it as pbrt-v4's path does; volpath skips it without
     // counting a bounce and lets shadow rays through it.
     bool interface = false;
+    // pbrt-v4's `subsurface`: the index of its interior in Scene::subsurfaces (materials/
+    // subsurface.h); its lobe is the dielectric boundary. Volpath reads it where a path refracts
+    // into the material (the tabulated method); the other integrators see the boundary only.
+    uint32_t subsurface = kNoSubsurface;
 };
 
 // Gives material `m` the surface parameters `s`.

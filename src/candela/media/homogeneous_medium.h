@@ -15,6 +15,9 @@ struct HomogeneousMedium {
     MediumSpectrum Le;                // emitted radiance, normalized and scaled as pbrt-v4 does
     float g = 0.0f;                   // Henyey-Greenstein asymmetry
     bool emissive = false;            // Le is not black
+    // The interior of a subsurface random walk (materials/subsurface.h): its scatterings are
+    // steps of the walk, not bounces of the path, and do not count toward max_depth.
+    bool subsurface = false;
 
     CANDELA_HD MediumPoint at(const Vec3f&, const MediumChannels& ch) const {
         return {sigma_a.at(ch), sigma_s.at(ch), emissive ? Le.at(ch) : Color(0.0f)};

@@ -40,6 +40,13 @@ inline float medium_g(const Medium& m) {
     return visit([](const auto& x) { return x.g; }, m);
 }
 
+// Whether a scattering in medium m counts toward the path's max_depth: not in a subsurface random
+// walk's interior (homogeneous_medium.h), whose walk takes hundreds of steps at high albedo.
+inline bool medium_counts_bounces(const Medium& m) {
+    const HomogeneousMedium* h = get_if<HomogeneousMedium>(&m);
+    return !h || !h->subsurface;
+}
+
 // Whether medium m emits light anywhere.
 inline bool medium_emissive(const Medium& m) {
     return visit([](const auto& x) { return x.emissive; }, m);

@@ -8,5 +8,7 @@
 namespace candela {
 
 inline constexpr std::string_view kMediaIgnoredWarning = "the scene has participating media but the ";
+// The same for subsurface materials (has_tabulated_subsurface, scene.h).
+inline constexpr std::string_view kSubsurfaceIgnoredWarning = "the scene has subsurface materials but the ";
 
 }  // namespace candela

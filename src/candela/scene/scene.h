@@ -22,6 +22,7 @@
 #include "candela/lights/delta_light.h"
 #include "candela/lights/environment_light.h"
 #include "candela/materials/material.h"
+#include "candela/materials/subsurface.h"
 #include "candela/media/medium.h"
 #include "candela/math/rgb.h"
 #include "candela/math/transform.h"
@@ -86,6 +87,7 @@ struct Scene {
     std::vector<TextureFile> texture_files;  // parallel to textures' images
     std::vector<Material> materials;
     std::vector<std::string> material_names;  // parallel to materials
+    std::vector<Subsurface> subsurfaces;       // the interiors of `subsurface` materials
     std::vector<TriangleMesh> meshes;
     std::vector<Sphere> spheres;
     std::vector<Disk> disks;
@@ -118,6 +120,16 @@ inline bool places_media(const Scene& scene) {
     if (scene.camera_medium != kNoMedium) return true;
     for (const Shape& shape : scene.shapes)
         if (shape.interior != kNoMedium || shape.exterior != kNoMedium) return true;
+    return false;
+}
+
+// Whether some material scatters below its surface by the tabulated BSSRDF, which only volpath
+// follows (and bsdf, volpath without light sampling, there); the other integrators see only its
+// dielectric boundary, as pbrt-v4's path integrator does, and the scene loader warns so (pbrt-v4's
+// cpu/render.cpp does too). The random walk's interior is a medium: places_media covers it.
+inline bool has_tabulated_subsurface(const Scene& scene) {
+    for (const Subsurface& s : scene.subsurfaces)
+        if (s.method == SubsurfaceMethod::kTabulated) return true;
     return false;
 }
 

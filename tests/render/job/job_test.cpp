@@ -3,9 +3,9 @@
 // Exact comparisons throughout: the images' floats and the written files' bytes.
 #include "candela/render/job/job.h"
 
-#include <algorithm>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstring>
@@ -357,6 +357,37 @@ TEST(RenderJob, MovingShapesGiveTheSameBitsAcrossThreadsResumesAndShards) {
     }
     const MergedRender merged = merge_shard_parts(parts);
     EXPECT_TRUE(same_bits(merged.state.film.resolve(merged.state.samples_done), whole.render.image));
+}
+
+// The same for a tabulated subsurface material, which only volpath (and bsdf) follows below its
+// surface: --integrator volpath withdraws the loader's warning, --integrator path gives its own.
+TEST(RenderJob, AnIntegratorFlagReplacesTheLoadersSubsurfaceWarning) {
+    const fs::path dir = fresh_dir("job_subsurface_warning_withdrawn");
+    const fs::path scene = dir / "skin-path.json";
+    std::ofstream(scene) << R"({"integrator": {"type": "path"}, "sampler": {"spp": 1},
+      "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 40, "resolution": [8, 8]},
+      "materials": {"skin": {"type": "subsurface", "name": "Skin1"}},
+      "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "skin"}],
+      "lights": [{"type": "environment", "color": 1}]})";
+    for (std::optional<IntegratorType> type : {std::optional<IntegratorType>(), std::optional(IntegratorType::kVolPath),
+                                               std::optional(IntegratorType::kPath)}) {
+        RenderJobOptions o = small_job(dir, "skin.exr", 1);
+        o.scene = scene;
+        o.overrides.integrator = type;
+        std::vector<std::string> warnings;
+        o.message = [&](JobMessage kind, const std::string& text) {
+            if (kind == JobMessage::kWarning) warnings.push_back(text);
+        };
+        run_render_job(o);
+        const auto count = [&](const char* words) {
+            return std::count_if(warnings.begin(), warnings.end(),
+                                 [&](const std::string& w) { return w.find(words) != std::string::npos; });
+        };
+        SCOPED_TRACE(type ? integrator_type_name(*type) : "the file's");
+        EXPECT_EQ(count("the path integrator renders only their dielectric boundary"), type ? 0 : 1);
+        EXPECT_EQ(count("--integrator path: the scene has subsurface materials"),
+                  type == IntegratorType::kPath ? 1 : 0);
+    }
 }
 
 }  // namespace

@@ -377,6 +377,20 @@ void warn_if_media_ignored(Scene& scene) {
             .formatted());
 }
 
+// pbrt-v4 warns the same way (cpu/render.cpp): only volpath follows a path below a subsurface
+// material's surface; pbrt-v4's path renders the dielectric boundary alone, and so does candela's.
+void warn_if_subsurface_ignored(Scene& scene) {
+    const IntegratorType t = scene.integrator.type;
+    if (t == IntegratorType::kVolPath || t == IntegratorType::kBsdf) return;
+    if (!has_tabulated_subsurface(scene)) return;
+    scene.warnings.push_back(
+        SceneError(SourceLocation{scene.file.string(), 0, 0, ""},
+                   fmt::format("{}{} integrator renders only their dielectric boundary (as pbrt-v4's path does); "
+                               "use \"volpath\"",
+                               kSubsurfaceIgnoredWarning, integrator_type_name(t)))
+            .formatted());
+}
+
 }  // namespace
 
 std::filesystem::path referenced_file(const JsonCursor& file, const std::filesystem::path& folder,
@@ -468,6 +482,7 @@ Scene load_scene_from_string(std::string_view json, const std::filesystem::path&
     load_texture_images(scene, document, budget);
     warn_if_unlit(scene);
     warn_if_media_ignored(scene);
+    warn_if_subsurface_ignored(scene);
     return scene;
 }
 

@@ -19,7 +19,7 @@ namespace {
 
 constexpr std::array<std::string_view, 14> kMaterialTypes = {
     "blend", "coated_conductor", "coated_diffuse", "conductor", "diffuse", "diffuse_transmission", "dielectric",
-    "hair", "interface", "mirror", "mix", "thin_dielectric", "transmission"};
+    "hair", "interface", "mirror", "mix", "subsurface", "thin_dielectric", "transmission"};
 // The types a `mix` may combine: every material type but `mix` itself.
 constexpr std::array<std::string_view, 10> kLobeMaterialTypes = {
     "coated_conductor", "coated_diffuse", "conductor", "diffuse", "diffuse_transmission", "dielectric", "hair",
@@ -31,16 +31,6 @@ constexpr std::array<std::string_view, 2> kNormalMapConventions = {"opengl", "di
 constexpr Bounds kReflectance = Bounds::closed(0, 1);
 // A Trowbridge-Reitz alpha: 0 is smooth; there is no upper limit (pbrt-v4 sets none either).
 constexpr Bounds kRoughness = Bounds::at_least(0);
-
-// `roughness`: one alpha for both directions, or [alpha_u, alpha_v]; each a number or texture.
-RoughnessParams read_roughness(const JsonCursor& c, Scene& scene) {
-    if (!c.is_array()) {
-        FloatParam alpha = read_float_param(c, scene, kRoughness);
-        return {alpha, alpha};
-    }
-    std::vector<JsonCursor> pair = c.elements(2, "a roughness: a number or [alpha_u, alpha_v]");
-    return {read_float_param(pair[0], scene, kRoughness), read_float_param(pair[1], scene, kRoughness)};
-}
 
 // True when the roughness is the constant 0: the smooth lobe of before roughness existed.
 bool is_zero(const RoughnessParams& r) {
@@ -292,6 +282,13 @@ void resolve_blends(const std::vector<PendingBlend>& pending, Scene& scene) {
                                             names_list(names)));
             const uint32_t part = uint32_t(found - names.begin());
             if (part == b.index) b.parts[k].fail(fmt::format("a blend cannot contain itself ({})", json_quoted(name)));
+            // The random walk's medium is given to the shapes of its material, which a blend's
+            // part is not.
+            if (const uint32_t s = scene.materials[part].subsurface;
+                s != kNoSubsurface && scene.subsurfaces[s].method == SubsurfaceMethod::kRandomWalk)
+                b.parts[k].fail(fmt::format("material {} is a subsurface random walk, which cannot be a blend's part "
+                                            "(its interior is the medium of its shapes); use the tabulated method",
+                                            json_quoted(name)));
             if (scene.materials[part].surface.cuts_out())
                 b.parts[k].fail(fmt::format(
                     "material {} has alpha < 1: a blend's parts cannot be cut out (give the alpha to the blend)",
@@ -365,7 +362,7 @@ Material interface_material() {
     return m;
 }
 
-Material read_material(JsonCursor c, Scene& scene, std::vector<PendingBlend>& pending) {
+Material read_material(JsonCursor c, const std::string& name, Scene& scene, std::vector<PendingBlend>& pending) {
     std::string_view type = c.require("type").choice("material type", kMaterialTypes);
     if (type == "interface") {
         c.reject_unknown_keys();
@@ -373,6 +370,7 @@ Material read_material(JsonCursor c, Scene& scene, std::vector<PendingBlend>& pe
     }
     Material material = type == "mix"     ? read_mix(c, scene)
                         : type == "blend" ? read_blend(c, scene, pending)
+                        : type == "subsurface" ? read_subsurface(c, scene, name)
                                           : make_material(read_lobe(c, type, scene));
     set_surface(material, read_surface(c, scene));
     c.reject_unknown_keys();
@@ -381,10 +379,19 @@ Material read_material(JsonCursor c, Scene& scene, std::vector<PendingBlend>& pe
 
 }  // namespace
 
+RoughnessParams read_roughness(const JsonCursor& c, Scene& scene) {
+    if (!c.is_array()) {
+        FloatParam alpha = read_float_param(c, scene, kRoughness);
+        return {alpha, alpha};
+    }
+    std::vector<JsonCursor> pair = c.elements(2, "a roughness: a number or [alpha_u, alpha_v]");
+    return {read_float_param(pair[0], scene, kRoughness), read_float_param(pair[1], scene, kRoughness)};
+}
+
 void read_materials(JsonCursor materials, Scene& scene) {
     std::vector<PendingBlend> pending;
     for (auto& [name, c] : materials.members()) {
-        scene.materials.push_back(read_material(c, scene, pending));
+        scene.materials.push_back(read_material(c, name, scene, pending));
         scene.material_names.push_back(name);
     }
     resolve_blends(pending, scene);

@@ -83,6 +83,12 @@ std::optional<MediumSpectrum> read_medium_emission(JsonCursor& medium, const Sce
 
 // `materials`: name -> material, in file order.
 void read_materials(JsonCursor materials, Scene& scene);
+// A material's `roughness`: one alpha for both directions, or [alpha_u, alpha_v]; each a number
+// or a texture.
+RoughnessParams read_roughness(const JsonCursor& c, Scene& scene);
+// A `subsurface` material (scene_subsurface.cpp) named `material_name`: its interior joins
+// Scene::subsurfaces, and for the random walk its medium joins Scene::media.
+Material read_subsurface(JsonCursor& c, Scene& scene, const std::string& material_name);
 
 // A colour parameter of a material: a constant (one number or [r, g, b], each within `bounds`),
 // `{"texture": NAME}` naming one of the `textures`, or a texture object written in place. A

@@ -181,6 +181,15 @@ void read_still_shape(JsonCursor& c, std::string_view type, const ShapeSection& 
     // The media on its two sides (pbrt-v4's MediumInterface); none by default.
     if (auto v = c.get("interior")) shape.interior = medium_index(*v, scene);
     if (auto v = c.get("exterior")) shape.exterior = medium_index(*v, scene);
+    // A subsurface random walk: the shape's interior is its material's medium.
+    if (const uint32_t s = scene.materials[shape.material].subsurface;
+        s != kNoSubsurface && scene.subsurfaces[s].method == SubsurfaceMethod::kRandomWalk) {
+        if (auto v = c.get("interior"))
+            v->fail(fmt::format("the material {} is a subsurface random walk: its medium is the shape's interior "
+                                "(leave \"interior\" out)",
+                                json_quoted(scene.material_names[shape.material])));
+        shape.interior = scene.subsurfaces[s].medium;
+    }
     std::optional<JsonCursor> emission_scale = c.get("emission_scale");
     if (section.object) {
         // A light must be sampled where it is, once per placement; pbrt-v4 refuses area lights in

@@ -279,6 +279,46 @@ void hair_keys(const Params& p, Json& m, ImportContext& ctx) {
     }
 }
 
+// pbrt-v4's SubsurfaceMaterial::Create: the interior by `name`, by sigma_a and sigma_s, by
+// reflectance (and mfp), or its defaults; scale, eta (candela's ior), g, and the dielectric
+// boundary's roughness. The JSON loader checks the values (one located line for each error).
+void subsurface_keys(const Params& p, Json& m, ImportContext& ctx) {
+    const auto colours = spectrum_textures(ctx);
+    const auto numbers = float_textures(ctx);
+    const std::string name = p.string_or("name", "");
+    std::optional<double> g;
+    if (const Parameter* e = p.find("g")) {
+        Json v = p.number_or_texture("g", numbers);
+        if (!v.is_number()) p.fail(e, "subsurface: \"g\" must be a number");
+        g = v.get<double>();
+    }
+    if (!name.empty()) {
+        m["name"] = name;
+        // pbrt-v4: the measured media give reduced coefficients; their g is 0.
+        if (g && *g != 0)
+            ctx.warn(p.find("g")->location, "subsurface: non-zero \"g\" ignored with named scattering coefficients");
+        g.reset();
+    } else {
+        Json sigma_a = p.colour("sigma_a", colours), sigma_s = p.colour("sigma_s", colours);
+        if (!sigma_a.is_null() && sigma_s.is_null())
+            p.fail(p.find("sigma_a"), "subsurface: provided \"sigma_a\" parameter without \"sigma_s\"");
+        if (sigma_a.is_null() && !sigma_s.is_null())
+            p.fail(p.find("sigma_s"), "subsurface: provided \"sigma_s\" parameter without \"sigma_a\"");
+        if (!sigma_a.is_null()) {
+            m["sigma_a"] = sigma_a;
+            m["sigma_s"] = sigma_s;
+        } else if (Json r = p.colour("reflectance", colours); !r.is_null()) {
+            m["reflectance"] = r;
+            if (Json mfp = p.colour("mfp", colours); !mfp.is_null()) m["mfp"] = mfp;
+        }
+    }
+    if (g) m["g"] = *g;
+    if (const double scale = p.float_or("scale", 1.0); scale != 1) m["scale"] = scale;
+    m["ior"] = p.float_or("eta", 1.33);
+    Json r = roughness(p, "", ctx);
+    if (r != Json(0.0)) m["roughness"] = r;
+}
+
 }  // namespace
 
 std::string translate_material(const std::string& wanted_name, const std::string& type, const Params& p,
@@ -339,8 +379,11 @@ std::string translate_material(const std::string& wanted_name, const std::string
         // pbrt-v4 makes no material of these three: a boundary between media only, which rays
         // cross unchanged (and no surface to carry an area light).
         m = Json{{"type", "interface"}};
+    } else if (type == "subsurface") {
+        m = Json{{"type", "subsurface"}};
+        subsurface_keys(p, m, ctx);
     } else {
-        // measured, subsurface: a diffuse stand-in of their colour.
+        // measured: a diffuse stand-in of its colour.
         Json r = p.colour("reflectance", colours);
         ctx.warn(p.location(), fmt::format("Material \"{}\" is not supported; a diffuse material of {} stands in", type,
                                            r.is_null() ? "reflectance 0.5" : "its reflectance"));

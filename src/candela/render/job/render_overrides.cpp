@@ -149,12 +149,21 @@ void apply_overrides(const RenderOverrides& o, Scene& scene) {
                      "scene's point, spot or directional lights (they have no area); use path or whitted");
         // The scene loader warns the same for a scene file's own integrator (scene_loader.cpp);
         // that warning no longer holds once the integrator is another.
-        std::erase_if(scene.warnings, [](const std::string& w) { return w.find(kMediaIgnoredWarning) != std::string::npos; });
+        std::erase_if(scene.warnings, [](const std::string& w) {
+            return w.find(kMediaIgnoredWarning) != std::string::npos ||
+                   w.find(kSubsurfaceIgnoredWarning) != std::string::npos;
+        });
         const bool sees_media = *o.integrator == IntegratorType::kVolPath || *o.integrator == IntegratorType::kBsdf;
         if (!sees_media && places_media(scene))
             scene.warnings.push_back(fmt::format("--integrator {}: the scene has participating media, which the {} "
                                                  "integrator ignores (it renders them as vacuum); use volpath",
                                                  integrator_type_name(*o.integrator), integrator_type_name(*o.integrator)));
+        if (!sees_media && has_tabulated_subsurface(scene)) {
+            const auto name = integrator_type_name(*o.integrator);
+            scene.warnings.push_back(fmt::format("--integrator {}: the scene has subsurface materials, of which the {} "
+                                                 "integrator renders only the dielectric boundary; use volpath",
+                                                 name, name));
+        }
     }
     if (o.spectral) scene.integrator.spectral = *o.spectral;
     if (o.sampler) scene.sampler.type = *o.sampler;
