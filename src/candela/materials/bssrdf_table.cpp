@@ -3,7 +3,6 @@
 #include <cmath>
 #include <span>
 
-#include <tbb/parallel_for.h>
 
 #include "candela/materials/fresnel.h"
 #include "candela/math/catmull_rom.h"
@@ -95,10 +94,9 @@ BssrdfTable make_beam_diffusion_table(float g, float eta) {
         t.rho_samples[i] = (1.0f - std::exp(-8.0f * static_cast<float>(i) / (kRhoSamples - 1))) /
                            (1.0f - std::exp(-8.0f));
 
-    // 6,400 entries of 200 exponentials each: 60 ms on one core, so the albedos' rows are
-    // computed in parallel (load-time work, the one use of TBB in materials/; each row is
-    // independent, so the table's bits do not depend on the thread count).
-    tbb::parallel_for(0, kRhoSamples, [&t, g, eta](int i) {
+    // 6,400 entries of 200 exponentials each: about 60 ms on one core, once per distinct (g, eta)
+    // at load. Serial: materials/ is value code without TBB (DESIGN.md).
+    for (int i = 0; i < kRhoSamples; ++i) {
         const float rho = t.rho_samples[i];
         const size_t row = static_cast<size_t>(i) * kRadiusSamples;
         for (int j = 0; j < kRadiusSamples; ++j) {
@@ -110,7 +108,7 @@ BssrdfTable make_beam_diffusion_table(float g, float eta) {
         t.rho_eff[i] = integrate_catmull_rom(t.radius_samples,
                                              std::span<const float>(&t.profile[row], kRadiusSamples),
                                              std::span<float>(&t.profile_cdf[row], kRadiusSamples));
-    });
+    }
     return t;
 }
 
