@@ -204,7 +204,7 @@ struct VolumePath {
         Rng pick(mix_bits(uint64_t(std::bit_cast<uint32_t>(u_pick))), 0x2545f4914f6cdd1dull);
         std::optional<SurfaceHit> exit;
         int candidates = 0;
-        Ray r{probe->p0, probe->p1 - probe->p0, 0.0f, 1.0f};
+        Ray r{probe->p0, probe->p1 - probe->p0, 0.0f, 1.0f, entry.time};  // at the path's time (motion blur)
         for (int hits = 0; hits < kMaxMediumEvents; ++hits) {
             ++counters.bounce;
             std::optional<SurfaceHit> h = accel.intersect(r);
