@@ -123,7 +123,10 @@ float sample_catmull_rom_2d(std::span<const float> nodes1, std::span<const float
     float f0 = value(idx), f1 = value(idx + 1);
     float x0 = nodes2[static_cast<size_t>(idx)], x1 = nodes2[static_cast<size_t>(idx) + 1];
     float width = x1 - x0;
-    auto [d0, d1] = interval_slopes(nodes2, idx, value);
+    // Plain variables, not a structured binding: the lambdas below capture them (clang 14, which
+    // the sanitizer build uses, cannot capture a binding).
+    const std::pair<float, float> slopes = interval_slopes(nodes2, idx, value);
+    const float d0 = slopes.first, d1 = slopes.second;
     u = (u - interpolate(cdf, idx)) / width;
 
     // Invert the segment's integral in t, F(t) = int_0^t f, a quartic whose derivative is the
@@ -170,7 +173,8 @@ float invert_catmull_rom(std::span<const float> x, std::span<const float> values
     auto value = [&](int k) { return values[static_cast<size_t>(k)]; };
     float x0 = x[static_cast<size_t>(i)], width = x[static_cast<size_t>(i) + 1] - x0;
     float f0 = value(i), f1 = value(i + 1);
-    auto [d0, d1] = interval_slopes(x, i, value);
+    const std::pair<float, float> slopes = interval_slopes(x, i, value);  // captured below (clang 14)
+    const float d0 = slopes.first, d1 = slopes.second;
     auto eval = [&](float t) {
         float t2 = t * t, t3 = t2 * t;
         float spline = (2.0f * t3 - 3.0f * t2 + 1.0f) * f0 + (-2.0f * t3 + 3.0f * t2) * f1 +
