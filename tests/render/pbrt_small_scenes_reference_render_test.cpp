@@ -44,7 +44,7 @@ constexpr SmallScene kScenes[] = {
     {"cloud-box", 0.01, 0.05},      {"vdb-smoke", 0.01, 0.04},     {"curves-diffuse", 0.01, 0.02, "pbrt-curves"},
     {"curves-hair", 0.01, 0.065, "pbrt-curves"},   {"sensor-caustic", 0.006, 0.055, "pbrt-sensor"},
     {"shapes", 0.01, 0.025, "pbrt-shapes"},         {"camera-pan", 0.01, 0.02, "pbrt-motion"},
-    {"shapes-move", 0.01, 0.02, "pbrt-motion"},
+    {"shapes-move", 0.01, 0.02, "pbrt-motion"},     {"instance-turn", 0.01, 0.02, "pbrt-motion"},
     {"killeroo-mfp", 0.01, 0.08, "pbrt-subsurface"}, {"killeroo-skin", 0.01, 0.08, "pbrt-subsurface"},
 };
 

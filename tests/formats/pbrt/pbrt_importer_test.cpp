@@ -409,6 +409,44 @@ TEST(PbrtImporter, EndTimeTransformsMoveShapesAndInstances) {
     EXPECT_EQ(scene.instance_motions.size(), 3u);
 }
 
+// pbrt-v4 interpolates a moving ObjectInstance in its render space, whose origin is the camera
+// (here at (1, 2, -5)): the object's shapes move by -c and each of its instances by +c first, so
+// that a turning instance turns about the camera as in pbrt-v4 (tests/data/pbrt-motion/
+// instance-turn.pbrt is the render). An object that no moving instance uses is left as it was.
+TEST(PbrtImporter, AMovingInstancePivotsItsObjectAboutTheCamera) {
+    const ImportedScene s = import(std::string("LookAt 1 2 -5  1 2 0  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+                                               "ObjectBegin \"o\"\nTranslate 0 1 0\nShape \"disk\"\n"
+                                               "Shape \"sphere\" \"float radius\" 0.5\nObjectEnd\n"
+                                               "ObjectBegin \"still\"\nShape \"disk\"\nObjectEnd\n"
+                                               "ObjectInstance \"o\"\nObjectInstance \"still\"\n"
+                                               "AttributeBegin\nActiveTransform EndTime\nRotate 30 0 0 1\n"
+                                               "ActiveTransform All\nObjectInstance \"o\"\nAttributeEnd\n") +
+                                   kLight);
+    for (const auto& w : s.warnings) ADD_FAILURE() << "unexpected warning: " << w;
+    const auto& o = s.document["objects"]["o"]["shapes"];
+    // A translate step by v, to the inversion's rounding.
+    auto expect_translate = [](const auto& step, const Vec3d& v) {
+        ASSERT_TRUE(step.contains("translate")) << step.dump();
+        for (int i = 0; i < 3; ++i) EXPECT_NEAR(step["translate"][i].template get<double>(), v[i], 1e-12) << step.dump();
+    };
+    // The disk's transform (its definition's Translate) gains the shift last; the whole sphere's
+    // centre (0, 1, 0) moves by it.
+    expect_translate(o[0]["transform"].back(), Vec3d(-1, -2, 5));
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(o[1]["center"][i].get<double>(), Vec3d(-1, -1, 5)[i], 1e-12) << o[1].dump();
+    // Both instances of "o", the still one and the moving one (and its end), take +c first.
+    const auto& shapes = s.document["shapes"];
+    ASSERT_EQ(shapes[0]["object"], "o");
+    expect_translate(shapes[0]["transform"].front(), Vec3d(1, 2, -5));
+    ASSERT_EQ(shapes[2]["object"], "o");
+    expect_translate(shapes[2]["transform"].front(), Vec3d(1, 2, -5));
+    expect_translate(shapes[2]["motion"]["transform"].front(), Vec3d(1, 2, -5));
+    // "still" has no moving instance: as before.
+    EXPECT_FALSE(s.document["objects"]["still"]["shapes"][0].contains("transform"));
+    EXPECT_FALSE(shapes[1].contains("transform"));
+    const Scene scene = load_scene_from_string(s.document.dump(), "pivot.json");
+    EXPECT_EQ(scene.instance_motions.size(), 1u);
+}
+
 TEST(PbrtImporter, AMovingShapeInAnObjectWarns) {
     const ImportedScene s = import(std::string("WorldBegin\nObjectBegin \"o\"\nActiveTransform EndTime\n"
                                                "Translate 3 0 0\nActiveTransform All\nShape \"disk\"\nObjectEnd\n") +

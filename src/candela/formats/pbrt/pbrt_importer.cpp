@@ -6,11 +6,13 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "candela/core/error.h"
 #include "candela/formats/pbrt/pbrt_import_context.h"
 #include "candela/formats/pbrt/pbrt_parser.h"
+#include "candela/math/animated_transform.h"
 #include "candela/math/constants.h"
 
 namespace candela::pbrt {
@@ -417,6 +419,7 @@ class Importer final : public Target {
         Json instance{{"type", "instance"}, {"object", name}};
         if (!state_.ctm.is_identity() || state_.moving()) instance["transform"] = transform_json(state_.ctm);
         add_motion(state_, instance);
+        if (state_.moving()) turning_objects_.insert(name);
         ctx_.origin(fmt::format("/shapes/{}", shapes.size()), at);
         shapes.push_back(std::move(instance));
     }
@@ -433,6 +436,7 @@ class Importer final : public Target {
             if (!ctx_.has_medium(name)) fail(at, fmt::format("Shape: medium \"{}\" is not defined", name));
         resolve_later_materials();
         finish_integrator();
+        for (const std::string& name : turning_objects_) pivot_about_render_origin(name);
         if (ctx_.doc()["objects"].empty()) ctx_.doc().erase("objects");
         if (ctx_.doc()["media"].empty()) ctx_.doc().erase("media");
         ctx_.finish_warnings();
@@ -440,6 +444,41 @@ class Importer final : public Target {
     void warn(const Location& at, const std::string& message) override { ctx_.warn(at, message); }
 
   private:
+    // pbrt-v4 interpolates a moving ObjectInstance in its render space (scene.cpp: the instance's
+    // transform is RenderFromObject(t) * WorldFromRender, its object's shapes already in render
+    // space), whose origin is the camera's position at the middle of the camera's times (the
+    // default "cameraworld"). A turning instance therefore turns about that point, not about its
+    // object's origin. The same here: object `name`'s shapes move by -c and every instance of it
+    // (moving or not, all share the object) by +c first, so that its path decomposes
+    // instance * translate(c) at both ends; translate(-c) before the path commutes with the
+    // interpolation, so the result is pbrt-v4's. Only objects with a moving instance change.
+    void pivot_about_render_origin(const std::string& name) {
+        const AnimatedTransform world_from_camera(options_.camera_from_world.inverse(), options_.camera_start_time,
+                                                  options_.camera_from_world_end.inverse(), options_.camera_end_time);
+        const Vec3d c = world_from_camera.at(0.5 * (options_.camera_start_time + options_.camera_end_time))
+                            .apply_point(Vec3d(0, 0, 0));
+        if (c.x == 0 && c.y == 0 && c.z == 0) return;
+        Json& objects = ctx_.doc()["objects"];
+        if (!objects.contains(name)) return;  // an empty object, left out
+        // candela's transform lists apply their first step first: the shapes' shift comes last.
+        for (Json& shape : objects[name]["shapes"]) {
+            if (shape.contains("transform"))
+                shape["transform"].push_back(Json{{"translate", {-c.x, -c.y, -c.z}}});
+            else if (shape.value("type", "") == "sphere")  // a whole sphere: its centre
+                for (int i = 0; i < 3; ++i) shape["center"][i] = shape["center"][i].get<double>() - c[i];
+            else
+                shape["transform"] = Json::array({Json{{"translate", {-c.x, -c.y, -c.z}}}});
+        }
+        const Json first_step{{"translate", {c.x, c.y, c.z}}};
+        auto pivot = [&](Json& transform) { transform.insert(transform.begin(), first_step); };
+        for (Json& shape : ctx_.doc()["shapes"]) {
+            if (shape.value("type", "") != "instance" || shape.value("object", "") != name) continue;
+            if (!shape.contains("transform")) shape["transform"] = Json::array();
+            pivot(shape["transform"]);
+            if (shape.contains("motion")) pivot(shape["motion"]["transform"]);
+        }
+    }
+
     // Post-multiplies the active CTMs by t (ActiveTransform chooses which).
     void apply(const Transform& t, const Location& at) {
         if (!state_.start_active && !state_.end_active) return;
@@ -511,6 +550,7 @@ class Importer final : public Target {
     std::vector<std::pair<std::string, Location>> medium_uses_;  // media shapes name, and where
     std::string default_material_;
     std::map<std::string, ObjectDefinition> objects_;
+    std::set<std::string> turning_objects_;  // objects with a moving ObjectInstance
     ObjectDefinition* object_ = nullptr;
     std::string object_name_;
 };
