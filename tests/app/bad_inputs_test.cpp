@@ -191,7 +191,7 @@ const BadInput kBadInputs[] = {
     {"unknown_light_type.json", kUnknownName, kError, "", 2, 23, "/lights/0/type",
      "unknown light type \"sun\"; expected one of: directional, environment, point, spot"},
     {"unknown_material_type.json", kUnknownName, kError, "", 3, 21, "/materials/red/type",
-     "unknown material type \"glossy\"; expected one of: blend, coated_conductor, coated_diffuse, conductor, dielectric, diffuse, diffuse_transmission, hair, interface, mirror, mix, thin_dielectric, transmission"},
+     "unknown material type \"glossy\"; expected one of: blend, coated_conductor, coated_diffuse, conductor, dielectric, diffuse, diffuse_transmission, hair, interface, mirror, mix, subsurface, thin_dielectric, transmission"},
     {"unknown_metal.json", kUnknownName, kError, "", 3, 44, "/materials/gold/metal",
      "unknown metal \"Gold\"; expected one of: Ag, Al, Au, Cr, Cu, CuZn, Fe, Ti"},
     {"unknown_shape_type.json", kUnknownName, kError, "", 4, 14, "/shapes/0/type",

@@ -296,19 +296,17 @@ TEST(RenderJob, AnIntegratorFlagThatIgnoresMediaIsWarnedAbout) {
     }
 }
 
-// A scene file whose own integrator ignores its media is warned about by the loader; --integrator
-// volpath withdraws that warning (it no longer holds), and --integrator path gives its own.
-TEST(RenderJob, AnIntegratorFlagReplacesTheLoadersMediaWarning) {
-    const fs::path dir = fresh_dir("job_media_warning_withdrawn");
-    const fs::path scene = dir / "fog-path.json";
-    std::ofstream(scene) << R"({"integrator": {"type": "path"}, "sampler": {"spp": 1},
-      "media": {"fog": {"type": "homogeneous", "sigma_s": 0.1}},
-      "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 40, "resolution": [8, 8],
-                 "medium": "fog"},
-      "lights": [{"type": "environment", "color": 1}]})";
+// A scene file whose own integrator (path) cannot follow part of it is warned about by the loader
+// (`file_warning`); --integrator volpath withdraws that warning (it no longer holds), and
+// --integrator path gives its own (`flag_warning`).
+void expect_integrator_flag_replaces_warning(const std::string& name, const std::string& scene_text,
+                                             const char* file_warning, const char* flag_warning) {
+    const fs::path dir = fresh_dir("job_" + name + "_warning_withdrawn");
+    const fs::path scene = dir / (name + ".json");
+    std::ofstream(scene) << scene_text;
     for (std::optional<IntegratorType> type : {std::optional<IntegratorType>(), std::optional(IntegratorType::kVolPath),
                                                std::optional(IntegratorType::kPath)}) {
-        RenderJobOptions o = small_job(dir, "fog.exr", 1);
+        RenderJobOptions o = small_job(dir, name + ".exr", 1);
         o.scene = scene;
         o.overrides.integrator = type;
         std::vector<std::string> warnings;
@@ -321,9 +319,31 @@ TEST(RenderJob, AnIntegratorFlagReplacesTheLoadersMediaWarning) {
                                  [&](const std::string& w) { return w.find(words) != std::string::npos; });
         };
         SCOPED_TRACE(type ? integrator_type_name(*type) : "the file's");
-        EXPECT_EQ(count("the path integrator ignores them"), type ? 0 : 1);
-        EXPECT_EQ(count("--integrator path: the scene has participating media"), type == IntegratorType::kPath ? 1 : 0);
+        EXPECT_EQ(count(file_warning), type ? 0 : 1);
+        EXPECT_EQ(count(flag_warning), type == IntegratorType::kPath ? 1 : 0);
     }
+}
+
+// Participating media, which the path integrator ignores.
+TEST(RenderJob, AnIntegratorFlagReplacesTheLoadersMediaWarning) {
+    expect_integrator_flag_replaces_warning("fog-path", R"({"integrator": {"type": "path"}, "sampler": {"spp": 1},
+      "media": {"fog": {"type": "homogeneous", "sigma_s": 0.1}},
+      "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 40, "resolution": [8, 8],
+                 "medium": "fog"},
+      "lights": [{"type": "environment", "color": 1}]})",
+                                            "the path integrator ignores them",
+                                            "--integrator path: the scene has participating media");
+}
+
+// A tabulated subsurface material, which only volpath (and bsdf) follows below its surface.
+TEST(RenderJob, AnIntegratorFlagReplacesTheLoadersSubsurfaceWarning) {
+    expect_integrator_flag_replaces_warning("skin-path", R"({"integrator": {"type": "path"}, "sampler": {"spp": 1},
+      "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 40, "resolution": [8, 8]},
+      "materials": {"skin": {"type": "subsurface", "name": "Skin1"}},
+      "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "skin"}],
+      "lights": [{"type": "environment", "color": 1}]})",
+                                            "the path integrator renders only their dielectric boundary",
+                                            "--integrator path: the scene has subsurface materials");
 }
 
 // Motion blur: the times that samples draw are theirs however the render is split. The whole
@@ -357,37 +377,6 @@ TEST(RenderJob, MovingShapesGiveTheSameBitsAcrossThreadsResumesAndShards) {
     }
     const MergedRender merged = merge_shard_parts(parts);
     EXPECT_TRUE(same_bits(merged.state.film.resolve(merged.state.samples_done), whole.render.image));
-}
-
-// The same for a tabulated subsurface material, which only volpath (and bsdf) follows below its
-// surface: --integrator volpath withdraws the loader's warning, --integrator path gives its own.
-TEST(RenderJob, AnIntegratorFlagReplacesTheLoadersSubsurfaceWarning) {
-    const fs::path dir = fresh_dir("job_subsurface_warning_withdrawn");
-    const fs::path scene = dir / "skin-path.json";
-    std::ofstream(scene) << R"({"integrator": {"type": "path"}, "sampler": {"spp": 1},
-      "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 40, "resolution": [8, 8]},
-      "materials": {"skin": {"type": "subsurface", "name": "Skin1"}},
-      "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "skin"}],
-      "lights": [{"type": "environment", "color": 1}]})";
-    for (std::optional<IntegratorType> type : {std::optional<IntegratorType>(), std::optional(IntegratorType::kVolPath),
-                                               std::optional(IntegratorType::kPath)}) {
-        RenderJobOptions o = small_job(dir, "skin.exr", 1);
-        o.scene = scene;
-        o.overrides.integrator = type;
-        std::vector<std::string> warnings;
-        o.message = [&](JobMessage kind, const std::string& text) {
-            if (kind == JobMessage::kWarning) warnings.push_back(text);
-        };
-        run_render_job(o);
-        const auto count = [&](const char* words) {
-            return std::count_if(warnings.begin(), warnings.end(),
-                                 [&](const std::string& w) { return w.find(words) != std::string::npos; });
-        };
-        SCOPED_TRACE(type ? integrator_type_name(*type) : "the file's");
-        EXPECT_EQ(count("the path integrator renders only their dielectric boundary"), type ? 0 : 1);
-        EXPECT_EQ(count("--integrator path: the scene has subsurface materials"),
-                  type == IntegratorType::kPath ? 1 : 0);
-    }
 }
 
 }  // namespace
