@@ -62,6 +62,12 @@ constexpr std::array kPresets = {
 
 std::span<const ScatteringPreset> scattering_presets() { return kPresets; }
 
+std::vector<std::string_view> scattering_preset_names() {
+    std::vector<std::string_view> names;
+    for (const ScatteringPreset& p : kPresets) names.push_back(p.name);
+    return names;
+}
+
 std::optional<ScatteringPreset> find_scattering_preset(std::string_view name) {
     for (const ScatteringPreset& p : kPresets)
         if (p.name == name) return p;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "candela/math/rgb.h"
 
@@ -22,5 +23,7 @@ struct ScatteringPreset {
 // The preset of that name (pbrt-v4's spelling, e.g. "Wholemilk", "Regular Milk"), or nullopt.
 std::optional<ScatteringPreset> find_scattering_preset(std::string_view name);
 std::span<const ScatteringPreset> scattering_presets();
+// Their names, in the table's order (for the message that lists them).
+std::vector<std::string_view> scattering_preset_names();
 
 }  // namespace candela

@@ -31,11 +31,9 @@ HomogeneousMedium read_homogeneous(JsonCursor& c, const Scene& scene) {
     if (preset) {
         const std::string name = preset->string();
         std::optional<ScatteringPreset> p = find_scattering_preset(name);
-        if (!p) {
-            std::vector<std::string_view> names;
-            for (const ScatteringPreset& s : scattering_presets()) names.push_back(s.name);
-            preset->fail(fmt::format("unknown medium preset {}; the presets are {}", json_quoted(name), names_list(names)));
-        }
+        if (!p)
+            preset->fail(fmt::format("unknown medium preset {}; the presets are {}", json_quoted(name),
+                                     names_list(scattering_preset_names())));
         m.sigma_a = medium_coefficient(p->sigma_a);
         m.sigma_s = medium_coefficient(p->sigma_s);
     }

@@ -78,12 +78,9 @@ void read_interior(JsonCursor& c, Scene& scene, Subsurface& s) {
             if (*other) (*other)->fail("give a medium \"name\" or its coefficients, not both");
         const std::string medium = name->string();
         std::optional<ScatteringPreset> p = find_scattering_preset(medium);
-        if (!p) {
-            std::vector<std::string_view> names;
-            for (const ScatteringPreset& preset : scattering_presets()) names.push_back(preset.name);
+        if (!p)
             name->fail(fmt::format("unknown measured medium {}; the media are {}", json_quoted(medium),
-                                   names_list(names)));
-        }
+                                   names_list(scattering_preset_names())));
         s.sigma_a.value = p->sigma_a;
         s.sigma_s.value = p->sigma_s;
         return;
