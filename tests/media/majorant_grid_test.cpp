@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "candela/media/grid_medium.h"
@@ -63,10 +64,12 @@ TEST(MajorantGrid, SegmentsTileTheRayInTheBox) {
 }
 
 // The points of segments of random rays through random grid media, with majorant grids of res^3
-// cells, where sigma_t exceeds the segment's sigma_maj times `factor`; 64 points per segment, its
-// ends included.
+// cells, where sigma_t exceeds the segment's sigma_maj times `factor`; 64 points per segment of a
+// 16^3 grid, its ends included, and as many per unit length on finer grids (16 per segment of 64^3,
+// whose cells are a quarter as long).
 int count_unbounded_points(float factor, uint64_t seed, int res = MajorantGrid::kRes) {
     Rng rng(seed, 1);
+    const int points = std::max(2, 64 * MajorantGrid::kRes / res);
     int violations = 0;
     for (int trial = 0; trial < 100; ++trial) {
         Transform ctm;
@@ -75,8 +78,8 @@ int count_unbounded_points(float factor, uint64_t seed, int res = MajorantGrid::
         for (int k = 0; k < 20; ++k) {
             const Ray ray = random_ray_at(m.box, ctm, rng);
             for (const MajorantSegment& s : segments_of(m, ray, random_t_max(rng), MediumChannels{})) {
-                for (int j = 0; j < 64; ++j) {
-                    const float t = j == 0 ? s.t0 : (j == 63 ? s.t1 : lerp(rng.next_float(), s.t0, s.t1));
+                for (int j = 0; j < points; ++j) {
+                    const float t = j == 0 ? s.t0 : (j == points - 1 ? s.t1 : lerp(rng.next_float(), s.t0, s.t1));
                     const MediumPoint mp = m.at(ray.at(t), MediumChannels{});
                     const float sigma_t = (mp.sigma_a + mp.sigma_s)[0];
                     violations += sigma_t > factor * s.sigma_maj[0] * (1 + 1e-5f) + 1e-6f;

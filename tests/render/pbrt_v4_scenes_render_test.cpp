@@ -1,7 +1,10 @@
 // The four pbrt-v4 scenes of ../shared/assets/pbrt-v4 (copied into scenes/pbrt-v4/, unchanged),
 // opened as .pbrt files and rendered in spectral mode (the default for pbrt scenes) at the
-// resolution and spp of ../shared/refs/pbrt-v4/scenes.txt, against pbrt-v4's own renders. The
-// bounds are that file's: what pbrt-v4's own noise at that spp explains (its README). The
+// resolution of ../shared/refs/pbrt-v4/scenes.txt, against pbrt-v4's own renders. The bounds are
+// that file's: what pbrt-v4's own noise at its spp explains (its README). candela renders half
+// that spp (since 2026-11-29, for CI's time): its noise is then larger, so the same bounds ask
+// more, and they still hold with room (block p95 at half the spp: cornell-box 1.28 % of 2 %,
+// veach-mis 3.75 % of 5 %, killeroo-simple 1.61 % of 2 %, veach-bidir 11.5 % of 15 %). The
 // references are kept as their 16x16-block means (tests/data/refs/, 3 KB each, written by
 // `candela_compare_pbrt --write-block-means ../shared/refs/pbrt-v4/NAME.exr OUT.exr`).
 #include <gtest/gtest.h>
@@ -25,12 +28,12 @@ struct PbrtScene {
 };
 
 // veach-bidir was rendered by pbrt-v4 with bdpt: its lamps shine through glass, which a path
-// tracer reaches only by chance, hence its wide bounds (scenes.txt).
+// tracer reaches only by chance, hence its wide bounds and more spp (scenes.txt: 1024, here 512).
 constexpr PbrtScene kScenes[] = {
-    {"cornell-box", "scene-v4.pbrt", 256, 256, 256, 0.01, 0.02},
-    {"veach-mis", "scene-v4.pbrt", 320, 180, 256, 0.02, 0.05},
-    {"killeroo-simple", "killeroo-simple.pbrt", 240, 240, 256, 0.01, 0.02},
-    {"veach-bidir", "scene-v4.pbrt", 256, 256, 1024, 0.03, 0.15},
+    {"cornell-box", "scene-v4.pbrt", 256, 256, 128, 0.01, 0.02},
+    {"veach-mis", "scene-v4.pbrt", 320, 180, 128, 0.02, 0.05},
+    {"killeroo-simple", "killeroo-simple.pbrt", 240, 240, 128, 0.01, 0.02},
+    {"veach-bidir", "scene-v4.pbrt", 256, 256, 512, 0.03, 0.15},
 };
 
 class AgainstPbrtV4Scene : public testing::TestWithParam<PbrtScene> {};
