@@ -115,6 +115,14 @@ GridMedium uniform_medium(const Transform& medium_from_world, int res) {
     return m;
 }
 
+TEST(MajorantGrid, VdbResolutionIsHalfTheVoxelsBetween16And64) {
+    EXPECT_EQ(vdb_majorant_resolution(1, 1, 1), 16);
+    EXPECT_EQ(vdb_majorant_resolution(30, 8, 20), 16);
+    EXPECT_EQ(vdb_majorant_resolution(40, 90, 10), 45);
+    EXPECT_EQ(vdb_majorant_resolution(128, 4, 4), 64);
+    EXPECT_EQ(vdb_majorant_resolution(1000, 2000, 500), 64);
+}
+
 TEST(MajorantGrid, VdbResolutionWalksItsCells) {
     const GridMedium m = uniform_medium(Transform(), MajorantGrid::kVdbRes);
     ASSERT_EQ(m.majorant.cells.size(), size_t(64 * 64 * 64));

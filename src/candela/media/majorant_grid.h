@@ -5,6 +5,7 @@
 // through its cells (Amanatides & Woo 1987), which yields one MajorantSegment per cell crossed.
 // Delta and ratio tracking then draw distances against a majorant close to the medium where it
 // is thin, instead of against the densest voxel everywhere.
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -55,6 +56,18 @@ MajorantGrid make_majorant_grid(const Bounds3f& bounds, F&& bound, int res = Maj
         for (int y = 0; y < n; ++y)
             for (int x = 0; x < n; ++x) g.cells[size_t((z * n + y) * n + x)] = bound(g.medium_cell(x, y, z), g.unit_cell(x, y, z));
     return g;
+}
+
+// The majorant grid's cells per axis for a VDB density of nx x ny x nz voxels: pbrt-v4's
+// NanoVDBMedium walks 64^3 cells, but a cell narrower than two voxels bounds hardly tighter than
+// one of two voxels (the trilinear interpolation anywhere in it reads the 2x2x2 voxels around it,
+// Lattice::max_in_lattice_box), while every ray through it pays a DDA step: half the largest voxel
+// count, between 16 (the uniformgrid's resolution) and 64. A grid of 128 or more voxels per axis
+// keeps pbrt-v4's 64; the small smoke of tests/data/pbrt-media/ gets 16 (bench/RESULTS.md,
+// 2026-11-29: its time to pbrt-v4's error fell from 0.57x to under 0.5x).
+inline int vdb_majorant_resolution(int nx, int ny, int nz) {
+    const int half = std::max({nx, ny, nz}) / 2;
+    return std::clamp(half, MajorantGrid::kRes, MajorantGrid::kVdbRes);
 }
 
 // The cells a medium-space ray crosses over [t_min, t_max] (the ray clipped to the grid's box), in

@@ -23,16 +23,30 @@
 
 namespace candela {
 
-// exp(-sigma dt) per channel; dt may be infinite (a ray leaving a medium that fills space),
-// where a zero sigma gives 1, not NaN.
-CANDELA_HD inline Color majorant_transmittance(const Color& sigma, float dt) {
+// sigma dt per channel; dt may be infinite (a ray leaving a medium that fills space), where a zero
+// sigma gives 0, not NaN.
+CANDELA_HD inline Color optical_depth(const Color& sigma, float dt) {
     if (std::isinf(dt)) dt = std::numeric_limits<float>::max();
-    return exp_channels(sigma * -dt);
+    return sigma * dt;
+}
+
+// exp(-tau) per channel; exactly 1 for the depth 0 of a stretch of empty cells.
+CANDELA_HD inline Color majorant_transmittance_of_depth(const Color& tau) {
+    if (tau.is_black()) return Color(1.0f);
+    return exp_channels(tau * -1.0f);
 }
 
 // `medium` is one medium type (media/medium.h; the caller visits the Variant once per walk),
 // `ray` has any non-zero direction; t_max is in the ray's parameter (as a hit's t is). `u` is the
 // first distance's uniform number, `rng` gives the rest.
+//
+// The distances are drawn as optical depths: one exponential depth tau = -log(1 - u) per point,
+// spent segment by segment at the hero's sigma_maj until a segment holds the rest (memorylessness
+// makes this the same distribution as pbrt-v4's fresh number per segment). The majorant
+// transmittance of all channels is kept as an optical depth too and exponentiated once per
+// point. So crossing a cell costs a few products, not a logarithm and four exponentials: on the
+// NanoVDB smoke, whose rays cross some hundred cells of its 64^3 majorant grid, those were a
+// quarter of the render.
 template <class M, class F>
 CANDELA_HD Color sample_majorant_transmittance(const M& medium, Ray ray, float t_max, float u, Rng& rng,
                                                const MediumChannels& ch, int hero, F&& callback) {
@@ -41,29 +55,32 @@ CANDELA_HD Color sample_majorant_transmittance(const M& medium, Ray ray, float t
     t_max *= len;
     ray.d = ray.d / len;
     auto segments = medium.majorants(ray, t_max, ch);
-    Color T_maj(1.0f);
+    Color tau_maj(0.0f);                // majorant optical depth since the last point, per channel
+    float tau = -std::log1p(-u);        // the hero's optical depth left to the next point
     for (;;) {
         std::optional<MajorantSegment> seg = segments.next();
-        if (!seg) return T_maj;
+        if (!seg) return majorant_transmittance_of_depth(tau_maj);
         const float sigma_h = seg->sigma_maj[hero];
-        if (sigma_h == 0.0f) {
-            // No collision can be drawn here: only the other channels' majorant attenuates.
-            T_maj *= majorant_transmittance(seg->sigma_maj, seg->t1 - seg->t0);
-            continue;
-        }
         float t0 = seg->t0;
         for (;;) {
-            // An exponential distance (pbrt-v4's SampleExponential: -log(1 - u) / a).
-            const float t = t0 - std::log1p(-u) / sigma_h;
-            u = rng.next_float();
-            if (t >= seg->t1) {
-                T_maj *= majorant_transmittance(seg->sigma_maj, seg->t1 - t0);
+            // Where the depth left runs out, if within this segment (never where sigma_h is 0).
+            const float dt_left = seg->t1 - t0;
+            if (!(sigma_h > 0.0f) || tau >= sigma_h * dt_left) {
+                if (sigma_h > 0.0f) tau -= sigma_h * dt_left;
+                tau_maj += optical_depth(seg->sigma_maj, dt_left);
                 break;
             }
-            T_maj *= majorant_transmittance(seg->sigma_maj, t - t0);
+            const float t = t0 + tau / sigma_h;
+            if (t >= seg->t1) {  // rounding put the point at the segment's end: go on past it
+                tau = 0.0f;
+                tau_maj += optical_depth(seg->sigma_maj, dt_left);
+                break;
+            }
+            const Color T_maj = majorant_transmittance_of_depth(tau_maj + optical_depth(seg->sigma_maj, t - t0));
             const Vec3f p = ray.at(t);
             if (!callback(p, medium.at(p, ch), seg->sigma_maj, T_maj)) return Color(1.0f);
-            T_maj = Color(1.0f);
+            tau_maj = Color(0.0f);
+            tau = -std::log1p(-rng.next_float());
             t0 = t;
         }
     }

@@ -54,7 +54,7 @@ uint64_t texture_loading_memory_bytes(uint64_t file_bytes, int width, int height
 // A grid medium (media/grid_medium.h, rgb_grid_medium.h) of `voxels` samples in each of
 // `float_grids` float grids (density, temperature, Le_scale) and `rgb_grids` RGB grids (a voxel's
 // RGB and its spectrum), with its majorant grids (at most two, of `majorant_res`^3 cells: 16 for
-// uniformgrid and rgbgrid, 64 for NanoVDB and OpenVDB media, media/majorant_grid.h) and,
+// uniformgrid and rgbgrid, 16 to 64 for NanoVDB and OpenVDB media, media/majorant_grid.h) and,
 // `blackbody`, its blackbody colour table.
 uint64_t grid_medium_memory_bytes(uint64_t voxels, int float_grids, int rgb_grids, bool blackbody,
                                   int majorant_res = 16);

@@ -239,15 +239,16 @@ TEST(VdbMedia, BadFilesAndGridNamesAreLocatedAtTheFileKey) {
 }
 
 TEST(VdbMedia, MemoryEstimateCountsTheMajorantGridOfAVdbMedium) {
-    // A NanoVDB medium's majorant grid is 64^3 floats (pbrt-v4's), 1 MiB: far more than this
-    // fixture's 8 x 6 x 5 voxels, and 32 times the two 16^3 grids a uniformgrid medium keeps.
+    // A NanoVDB medium's majorant grid has 16^3 cells for this fixture's 8 x 6 x 5 voxels
+    // (vdb_majorant_resolution: half the largest voxel count, at least 16); the estimate charges two
+    // such grids, 32 KiB of floats: far more than the fixture's 240 voxels.
     const std::string file = test::nvdb_fixture("density_8x6x5_v32_3.nvdb").string();
     const Scene s = load_scene_from_string(
         fmt::format(R"({{"camera": {{"resolution": [1, 1]}}, "media": {{"m": {{"type": "nanovdb", "file": "{}"}}}}}})",
                     file),
         std::filesystem::path(CANDELA_TEST_DATA_DIR) / "scenes" / "inline.json");
     ASSERT_EQ(s.media.size(), 1u);
-    EXPECT_GE(scene_memory_bytes(s), film_memory_bytes(1, 1) + 64 * 64 * 64 * sizeof(float));
+    EXPECT_GE(scene_memory_bytes(s), film_memory_bytes(1, 1) + 2 * 16 * 16 * 16 * sizeof(float));
 }
 
 }  // namespace

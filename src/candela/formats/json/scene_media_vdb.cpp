@@ -106,7 +106,7 @@ Medium read_vdb_medium(std::string_view type, JsonCursor& c, const Scene& scene,
     const float Le_scale = c.get("Le_scale") ? c.get("Le_scale")->number_f(Bounds::at_least(0)) : 1.0f;
     m.Le_scale = placed_field(1, 1, 1, {Le_scale}, AffineMap3f{}, Le_scale);
     if (m.temperature.empty()) m.Le_scale = GridField{};
-    finish_grid_medium(m, MajorantGrid::kVdbRes);  // pbrt-v4's NanoVDBMedium: 64^3
+    finish_grid_medium(m, vdb_majorant_resolution(m.density.lattice.nx, m.density.lattice.ny, m.density.lattice.nz));
     return m;
 }
 
