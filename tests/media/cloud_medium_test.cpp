@@ -82,7 +82,8 @@ float plain_noise(const Vec3f& p) {
     };
     // pbrt-v4's Pow<5>, Pow<4> and Pow<3>: (t t)(t t) t, (t t)(t t), (t t) t.
     auto fade = [](float t) { return 6 * ((t * t) * (t * t) * t) - 15 * ((t * t) * (t * t)) + 10 * ((t * t) * t); };
-    const float x = std::fmod(p.x, float(1 << 30)), y = std::fmod(p.y, float(1 << 30)), z = std::fmod(p.z, float(1 << 30));
+    constexpr float kWrap = float(1 << 30);
+    const float x = std::fmod(p.x, kWrap), y = std::fmod(p.y, kWrap), z = std::fmod(p.z, kWrap);
     const int ix = int(std::floor(x)), iy = int(std::floor(y)), iz = int(std::floor(z));
     const float dx = x - float(ix), dy = y - float(iy), dz = z - float(iz);
     const int X = ix & 255, Y = iy & 255, Z = iz & 255;
@@ -90,7 +91,8 @@ float plain_noise(const Vec3f& p) {
     const float x00 = lerp(wx, grad(X, Y, Z, dx, dy, dz), grad(X + 1, Y, Z, dx - 1, dy, dz));
     const float x10 = lerp(wx, grad(X, Y + 1, Z, dx, dy - 1, dz), grad(X + 1, Y + 1, Z, dx - 1, dy - 1, dz));
     const float x01 = lerp(wx, grad(X, Y, Z + 1, dx, dy, dz - 1), grad(X + 1, Y, Z + 1, dx - 1, dy, dz - 1));
-    const float x11 = lerp(wx, grad(X, Y + 1, Z + 1, dx, dy - 1, dz - 1), grad(X + 1, Y + 1, Z + 1, dx - 1, dy - 1, dz - 1));
+    const float x11 =
+        lerp(wx, grad(X, Y + 1, Z + 1, dx, dy - 1, dz - 1), grad(X + 1, Y + 1, Z + 1, dx - 1, dy - 1, dz - 1));
     return lerp(wz, lerp(wy, x00, x10), lerp(wy, x01, x11));
 }
 
